@@ -1,0 +1,873 @@
+#include "app.hpp"
+
+#include "context.hpp"
+#include "json.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <map>
+
+namespace shadows {
+
+// ---------------------------------------------------------------- lesson registry
+
+namespace {
+std::map<std::string, LessonFactory>& registry() {
+  static std::map<std::string, LessonFactory> lessons;
+  return lessons;
+}
+}  // namespace
+
+LessonRegistrar::LessonRegistrar(const std::string& name, LessonFactory factory) {
+  registry()[name] = std::move(factory);
+}
+
+std::unique_ptr<Lesson> makeLesson(const std::string& name) {
+  auto it = registry().find(name);
+  if (it == registry().end()) throw std::invalid_argument("no lesson named " + name);
+  return it->second();
+}
+
+std::vector<std::string> registeredLessons() {
+  std::vector<std::string> names;
+  for (const auto& [name, factory] : registry()) names.push_back(name);
+  return names;
+}
+
+// ---------------------------------------------------------------- command line
+
+namespace {
+
+const char* kUsage =
+    "usage: %s [options]\n"
+    "  (no option)          a window with the ImGui panel if a display exists, else headless\n"
+    "  --headless           render without a display (OSMesa) and write --out\n"
+    "  --backend NAME       headless context: osmesa (default) or egl (surfaceless)\n"
+    "  --size WxH           image size (default 800x600)\n"
+    "  --frames N           timed frames after one warm-up frame (default 5)\n"
+    "  --out FILE.png       write the final frame\n"
+    "  --panel              draw the ImGui panel into the headless picture too\n"
+    "  --set name=value     set a parameter (repeatable); see --list-params\n"
+    "  --list-params        list every parameter: name, type, default, range, help\n"
+    "  --report FILE.json   parameters, timings, work counters, error against the truth\n"
+    "  --truth-out FILE.png the ray-traced truth (white lit, black shadowed)\n"
+    "  --error-out FILE.png the mistakes: magenta false shadow, cyan false lit\n"
+    "  --no-truth           skip the ray-traced truth (faster)\n"
+    "  --help               this text\n"
+    "exit codes: 0 ok, 1 runtime failure (no context, shader error, GL error), 2 bad input\n";
+
+bool parsePositive(const std::string& text, int& out, int max) {
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos) return false;
+  if (text.size() > 6) return false;
+  out = std::stoi(text);
+  return out >= 1 && out <= max;
+}
+
+}  // namespace
+
+std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto next = [&](std::string& out) -> bool {
+      if (i + 1 >= argc) return false;
+      out = argv[++i];
+      return true;
+    };
+    std::string value;
+    if (arg == "--headless") {
+      o.headless = true;
+    } else if (arg == "--window") {
+      o.force_window = true;
+    } else if (arg == "--panel") {
+      o.panel = true;
+    } else if (arg == "--no-truth") {
+      o.truth = false;
+    } else if (arg == "--list-params") {
+      o.list_params = true;
+    } else if (arg == "--help" || arg == "-h") {
+      o.help = true;
+    } else if (arg == "--backend") {
+      if (!next(value) || (value != "osmesa" && value != "egl")) {
+        return "--backend: expected osmesa or egl";
+      }
+      o.backend = value;
+    } else if (arg == "--size") {
+      const auto x = next(value) ? value.find('x') : std::string::npos;
+      if (x == std::string::npos || !parsePositive(value.substr(0, x), o.width, 8192) ||
+          !parsePositive(value.substr(x + 1), o.height, 8192)) {
+        return "--size: expected WxH with W and H in 1..8192, got '" + value + "'";
+      }
+    } else if (arg == "--frames") {
+      if (!next(value) || !parsePositive(value, o.frames, 100000)) {
+        return "--frames: expected a whole number in 1..100000, got '" + value + "'";
+      }
+    } else if (arg == "--set") {
+      if (!next(value)) return "--set: expected name=value";
+      o.sets.push_back(value);
+    } else if (arg == "--out" || arg == "--report" || arg == "--truth-out" ||
+               arg == "--error-out") {
+      if (!next(value)) return arg + ": expected a file name";
+      if (!canWrite(value)) return arg + ": cannot write '" + value + "' (no such directory?)";
+      (arg == "--out"         ? o.out
+       : arg == "--report"    ? o.report
+       : arg == "--truth-out" ? o.truth_out
+                              : o.error_out) = value;
+    } else {
+      return "unknown option '" + arg + "'; see --help";
+    }
+  }
+  return {};
+}
+
+// ---------------------------------------------------------------- GPU state of the runner
+
+struct Runner::Gpu {
+  std::vector<Mesh> meshes;
+  // Headless target: what the lesson draws into and the PNG is read from.
+  Texture target_color, target_depth;
+  std::unique_ptr<Framebuffer> target;
+  // Float targets for the truth: surface (position, normal) and the lesson's visibility.
+  Texture surface_position, surface_normal, surface_depth;
+  std::unique_ptr<Framebuffer> surface;
+  Texture float_color, float_depth;
+  std::unique_ptr<Framebuffer> float_target;
+  int size_w = 0, size_h = 0;
+  Program gbuffer, image, depth_inset;
+  Texture shown;  // the error or truth image, uploaded for display
+  GLuint empty_vao = 0;
+  bool imgui = false;
+  bool imgui_glfw = false;
+  std::unique_ptr<HeadlessContext> context;
+  GLFWwindow* window = nullptr;
+
+  ~Gpu() {
+    if (imgui) {
+      ImGui_ImplOpenGL3_Shutdown();
+      if (imgui_glfw) ImGui_ImplGlfw_Shutdown();
+      ImGui::DestroyContext();
+    }
+    if (empty_vao != 0) glDeleteVertexArrays(1, &empty_vao);
+  }
+
+  void ensureTargets(int w, int h) {
+    if (w == size_w && h == size_h) return;
+    size_w = w, size_h = h;
+    target_color = Texture::color(w, h, GL_RGBA8);
+    target_depth = Texture::depthStencil(w, h);
+    target = std::make_unique<Framebuffer>();
+    target->attachColor(target_color);
+    target->attachDepthStencil(target_depth);
+    target->check();
+    surface_position = Texture::color(w, h, GL_RGBA32F);
+    surface_normal = Texture::color(w, h, GL_RGBA32F);
+    surface_depth = Texture::depthStencil(w, h);
+    surface = std::make_unique<Framebuffer>();
+    surface->attachColor(surface_position, 0);
+    surface->attachColor(surface_normal, 1);
+    surface->attachDepthStencil(surface_depth);
+    surface->check();
+    float_color = Texture::color(w, h, GL_RGBA32F);
+    float_depth = Texture::depthStencil(w, h);
+    float_target = std::make_unique<Framebuffer>();
+    float_target->attachColor(float_color);
+    float_target->attachDepthStencil(float_depth);
+    float_target->check();
+  }
+};
+
+// ---------------------------------------------------------------- Frame helpers
+
+void Frame::bindTarget() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, target);
+  glViewport(0, 0, width, height);
+}
+
+void Frame::drawObjects(const Program& program, Objects which, const glm::mat4* cull) const {
+  runner.drawObjects(*this, program, which, cull);
+}
+
+void Frame::setLightingUniforms(const Program& program, float dimming) const {
+  program.set("uLightPos", light.position);
+  program.set("uLightDir", light.direction);
+  program.set("uLightDirectional", light.directional ? 1 : 0);
+  program.set("uEye", eye);
+  program.set("uDimming", dimming);
+}
+
+void Frame::drawDepthInset(const Texture& depth, float near, float far, bool perspective,
+                           bool fullscreen) const {
+  runner.drawInset(*this, depth, near, far, perspective, fullscreen);
+}
+
+void Runner::drawObjects(const Frame& frame, const Program& program, Objects which,
+                         const glm::mat4* cull) const {
+  program.use();
+  for (size_t i = 0; i < scene_.objects.size(); ++i) {
+    const SceneObject& object = scene_.objects[i];
+    if (which == Objects::Casters && !object.caster) continue;
+    if (which == Objects::Receivers && !object.receiver) continue;
+    if (cull != nullptr) {
+      const Bounds b = object.worldBounds();
+      if (sphereOutsideFrustum(*cull, b.center(), b.radius())) {
+        frame.measure.count("culled_objects");
+        continue;
+      }
+    }
+    program.set("uModel", object.model);
+    program.set("uNormalMatrix", glm::transpose(glm::inverse(object.model)));
+    program.set("uColor", object.color);
+    program.set("uObject", static_cast<int>(i));
+    gpu_->meshes[i].draw();
+  }
+}
+
+void Runner::drawInset(const Frame& frame, const Texture& depth, float near, float far,
+                       bool perspective, bool fullscreen) const {
+  const int side = std::max(16, std::min(frame.width, frame.height) / 4);
+  frame.bindTarget();
+  if (!fullscreen) glViewport(frame.width - side - 8, 8, side, side);
+  glDisable(GL_DEPTH_TEST);
+  // The lesson samples this texture with a compare; a plain read needs the compare off.
+  GLint compare_mode = GL_NONE;
+  glBindTexture(GL_TEXTURE_2D, depth.id());
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, &compare_mode);
+  depth.setCompare(false);
+  depth.bind(0);
+  gpu_->depth_inset.use();
+  gpu_->depth_inset.set("uDepth", 0);
+  gpu_->depth_inset.set("uNear", near);
+  gpu_->depth_inset.set("uFar", far);
+  gpu_->depth_inset.set("uPerspective", perspective ? 1 : 0);
+  glBindVertexArray(gpu_->empty_vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  countDrawCall();
+  depth.setCompare(compare_mode == GL_COMPARE_REF_TO_TEXTURE);
+  glEnable(GL_DEPTH_TEST);
+  frame.bindTarget();
+}
+
+// ---------------------------------------------------------------- Runner
+
+Runner::Runner(const std::string& lessonName, std::unique_ptr<Lesson> lesson, RunOptions options)
+    : name_(lessonName), lesson_(std::move(lesson)), options_(std::move(options)) {
+  params_.addChoice("scene", scenePresets(), "torus_pyramid",
+                    "scene preset (sets light and camera defaults)", kDirtyScene | kDirtyShadowMap);
+  std::vector<std::string> views = {"shaded", "visibility"};
+  for (const auto& v : lesson_->debugViews()) views.push_back(v);
+  views.push_back("truth");
+  views.push_back("error");
+  params_.addChoice("view", views, "shaded",
+                    "what to show: shaded, the shadow term alone, debug views, the ray-traced "
+                    "truth, or the error against it");
+  lesson_->declare(params_);
+  declareShared();
+  loadScene();
+}
+
+Runner::~Runner() {
+  gpu_.reset();
+  measure_.reset();
+  if (window_) glfwTerminate();
+}
+
+void Runner::declareShared() {
+  constexpr std::uint32_t kLight = kDirtyShadowMap;
+  params_.addChoice("light.type", {"spot", "directional"}, "spot",
+                    "spot: perspective frustum; directional: orthographic", kLight);
+  params_.addVec3("light.pos", {3, 6, 4}, -50, 50, "light position", kLight);
+  params_.addVec3("light.target", {0, 0, 0}, -50, 50, "where the light points", kLight);
+  params_.addFloat("light.fov", 60, 5, 160, "spot light field of view, degrees", kLight);
+  params_.addFloat("light.extent", 10, 0.5f, 50, "directional: half width of the light box",
+                   kLight);
+  params_.addFloat("light.near", 1, 0.001f, 100, "light frustum near plane", kLight).logarithmic =
+      true;
+  params_.addFloat("light.far", 20, 0.01f, 1000, "light frustum far plane", kLight).logarithmic =
+      true;
+  params_.addVec3("camera.pos", {0, 4, 8}, -100, 100, "eye position (drag in the window)");
+  params_.addVec3("camera.target", {0, 0, 0}, -100, 100, "what the eye looks at");
+  params_.addFloat("camera.fov", 45, 10, 120, "eye vertical field of view, degrees");
+}
+
+void Runner::loadScene() {
+  scene_ = makeScene(params_.at("scene").choice());
+  const LightSetup& l = scene_.light;
+  params_.setDefaultChoice(params_.at("light.type"), l.directional ? "directional" : "spot");
+  params_.setDefaultVec3(params_.at("light.pos"), l.position);
+  params_.setDefaultVec3(params_.at("light.target"), l.target);
+  params_.setDefaultFloat(params_.at("light.fov"), l.fov);
+  params_.setDefaultFloat(params_.at("light.extent"), l.extent);
+  params_.setDefaultFloat(params_.at("light.near"), l.near);
+  params_.setDefaultFloat(params_.at("light.far"), l.far);
+  params_.setDefaultVec3(params_.at("camera.pos"), scene_.camera.position);
+  params_.setDefaultVec3(params_.at("camera.target"), scene_.camera.target);
+  params_.setDefaultFloat(params_.at("camera.fov"), scene_.camera.fov);
+  params_.consume(kDirtyScene);
+  truth_.reset();
+  if (gpu_) {
+    gpu_->meshes.clear();
+    for (const auto& object : scene_.objects) gpu_->meshes.emplace_back(object.mesh);
+  }
+}
+
+std::string Runner::applySets(const std::vector<std::string>& sets) {
+  // The scene goes first: its preset sets light and camera defaults the others may override.
+  for (const auto& s : sets) {
+    if (s.rfind("scene=", 0) == 0) {
+      if (auto e = params_.assign(s); !e.empty()) return e;
+      loadScene();
+    }
+  }
+  for (const auto& s : sets) {
+    if (s.rfind("scene=", 0) == 0) continue;
+    if (auto e = params_.assign(s); !e.empty()) return e;
+  }
+  return {};
+}
+
+Light Runner::currentLight() const {
+  auto& p = const_cast<Params&>(params_);
+  Light l;
+  l.directional = p.at("light.type").is("directional");
+  l.position = p.at("light.pos").v();
+  l.target = p.at("light.target").v();
+  const glm::vec3 d = l.target - l.position;
+  l.direction = glm::dot(d, d) > 1e-12f ? glm::normalize(d) : glm::vec3(0, -1, 0);
+  l.fov = p.at("light.fov").f();
+  l.extent = p.at("light.extent").f();
+  l.near = p.at("light.near").f();
+  l.far = p.at("light.far").f();
+  l.view = lookAtSafe(l.position, l.target);
+  return l;
+}
+
+void Runner::initHeadless() {
+  gpu_ = std::make_unique<Gpu>();
+  gpu_->context = createHeadlessContext(options_.backend);
+  GlErrorLog::install();
+  GlErrorLog::reset();
+  measure_ = std::make_unique<Measure>();
+  const auto dir = commonShaderDir();
+  gpu_->gbuffer = Program(dir / "gbuffer.vert", dir / "gbuffer.frag");
+  gpu_->image = Program(dir / "fullscreen.vert", dir / "image.frag");
+  gpu_->depth_inset = Program(dir / "fullscreen.vert", dir / "depth_inset.frag");
+  glGenVertexArrays(1, &gpu_->empty_vao);
+  for (const auto& object : scene_.objects) gpu_->meshes.emplace_back(object.mesh);
+  gpu_->ensureTargets(options_.width, options_.height);
+  lesson_->init();
+  if (options_.panel) {
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+    gpu_->imgui = true;
+  }
+}
+
+void Runner::setMouse(glm::vec2 position, bool leftDown) {
+  mouse_ = position;
+  mouse_down_ = leftDown;
+}
+
+int Runner::glErrors() const {
+  return GlErrorLog::poll();
+}
+
+void Runner::renderFrame() {
+  const GLuint target = window_ ? 0 : gpu_->target->id();
+  int w = options_.width, h = options_.height;
+  if (window_) glfwGetFramebufferSize(gpu_->window, &w, &h);
+  const bool panel = gpu_->imgui && (window_ || options_.panel);
+  renderInto(target, w, h, params_.at("view").choice(), true, panel);
+  GlErrorLog::poll();
+}
+
+void Runner::renderInto(GLuint target, int width, int height, const std::string& mode, bool timed,
+                        bool withPanel) {
+  measure_->setEnabled(timed);
+  if (params_.consume(kDirtyScene)) loadScene();
+  const Light light = currentLight();
+  Frame frame(*this, params_, scene_, *measure_, light);
+  frame.eye = params_.at("camera.pos").v();
+  frame.view = lookAtSafe(frame.eye, params_.at("camera.target").v());
+  const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
+  frame.projection = glm::perspective(glm::radians(params_.at("camera.fov").f()), aspect,
+                                      scene_.camera.near, scene_.camera.far);
+  frame.width = width;
+  frame.height = height;
+  frame.target = target;
+  frame.mode = mode;
+
+  if (withPanel) {
+    ImGuiIO& io = ImGui::GetIO();
+    if (!window_) {
+      io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
+      io.DeltaTime = 1.0f / 60.0f;
+      io.MousePos = ImVec2(mouse_.x, mouse_.y);
+      io.MouseDown[0] = mouse_down_;
+    } else {
+      ImGui_ImplGlfw_NewFrame();
+    }
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui::NewFrame();
+    drawPanel(frame);
+    ImGui::Render();
+    // A widget may have changed the scene or the view this very frame.
+    if (params_.consume(kDirtyScene)) loadScene();
+    frame.mode = params_.at("view").choice();
+  }
+
+  measure_->beginFrame();
+  // Every lesson starts from the same GL state.
+  frame.bindTarget();
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  if (frame.mode == "truth" || frame.mode == "error") {
+    measure_->setEnabled(false);
+    measureError();
+    measure_->setEnabled(timed);
+    showImage(frame.mode == "truth" ? truth_image_ : error_image_, target, width, height);
+  } else {
+    lesson_->render(frame);
+    light_frustum_ = frame.light_view_projection;
+  }
+  if (withPanel) {
+    frame.bindTarget();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  }
+  measure_->endFrame();
+  measure_->setEnabled(true);
+}
+
+void Runner::showImage(const Image& image, GLuint target, int width, int height) {
+  if (image.width == 0) return;
+  if (gpu_->shown.width() != image.width || gpu_->shown.height() != image.height) {
+    gpu_->shown = Texture::color(image.width, image.height, GL_RGBA8);
+  }
+  glBindTexture(GL_TEXTURE_2D, gpu_->shown.id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                  image.rgba.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, target);
+  glViewport(0, 0, width, height);
+  glDisable(GL_DEPTH_TEST);
+  gpu_->shown.bind(0);
+  gpu_->image.use();
+  gpu_->image.set("uImage", 0);
+  glBindVertexArray(gpu_->empty_vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glEnable(GL_DEPTH_TEST);
+}
+
+std::vector<float> Runner::renderVisibility() {
+  const int w = options_.width, h = options_.height;
+  gpu_->ensureTargets(w, h);
+  const GLuint fbo = gpu_->float_target->id();
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  renderInto(fbo, w, h, "visibility", false, false);
+  std::vector<glm::vec4> rgba(static_cast<size_t>(w) * h);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
+  std::vector<float> visibility(rgba.size());
+  for (size_t i = 0; i < rgba.size(); ++i) visibility[i] = rgba[i].r;
+  return visibility;
+}
+
+std::string Runner::errorKey() const {
+  // Everything that can change the picture: every parameter but the view, and the size.
+  std::string key = std::to_string(options_.width) + "x" + std::to_string(options_.height);
+  for (const auto& p : params_.all()) {
+    if (p.name != "view") key += ";" + p.name + "=" + p.text();
+  }
+  return key;
+}
+
+const ErrorState& Runner::measureError() {
+  const std::string key = errorKey();
+  if (error_.valid && key == error_key_) return error_;
+  const int w = options_.width, h = options_.height;
+  const size_t n = static_cast<size_t>(w) * h;
+  const bool was_enabled = measure_->enabled();
+  measure_->setEnabled(false);
+
+  // The lesson's shadow term, and its shaded picture in float to catch NaN and Inf.
+  std::vector<float> rendered = renderVisibility();
+  const GLuint fbo = gpu_->float_target->id();
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  renderInto(fbo, w, h, "shaded", false, false);
+  std::vector<glm::vec4> shaded(n);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, shaded.data());
+
+  // The surface seen by each pixel, from the runner's own geometry pass.
+  SurfaceBuffer surface{w, h, std::vector<glm::vec4>(n), std::vector<glm::vec4>(n)};
+  gpu_->surface->bind();
+  glViewport(0, 0, w, h);
+  const float clear_position[4] = {0, 0, 0, -1};
+  const float clear_normal[4] = {0, 0, 0, 0};
+  glClearBufferfv(GL_COLOR, 0, clear_position);
+  glClearBufferfv(GL_COLOR, 1, clear_normal);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  const Light light = currentLight();
+  Frame frame(*this, params_, scene_, *measure_, light);
+  const glm::vec3 eye = params_.at("camera.pos").v();
+  const glm::mat4 projection = glm::perspective(glm::radians(params_.at("camera.fov").f()),
+                                                static_cast<float>(w) / static_cast<float>(h),
+                                                scene_.camera.near, scene_.camera.far);
+  gpu_->gbuffer.set("uViewProjection",
+                    projection * lookAtSafe(eye, params_.at("camera.target").v()));
+  gpu_->gbuffer.set("uHasLightFrustum", light_frustum_ ? 1 : 0);
+  gpu_->gbuffer.set("uLightViewProjection", light_frustum_.value_or(glm::mat4(1.0f)));
+  drawObjects(frame, gpu_->gbuffer, Objects::All, nullptr);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, surface.position.data());
+  glReadBuffer(GL_COLOR_ATTACHMENT1);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, surface.normal.data());
+
+  if (!truth_) {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::uvec3> triangles;
+    scene_.worldTriangles(positions, triangles);
+    truth_ = std::make_unique<Truth>(positions, triangles, scene_.bounds().radius());
+  }
+  TruthLight truth_light;
+  truth_light.position = light.position;
+  truth_light.direction = light.direction;
+  truth_light.directional = light.directional;
+  const std::vector<float> truth = truth_->visibility(surface, truth_light);
+  const std::vector<float> weight = Truth::facingWeight(surface, truth_light);
+
+  error_.metrics = compareVisibility(rendered, truth, weight);
+  error_.metrics.truth = light.directional ? "directional" : "point";
+  long long shaded_nonfinite = 0;
+  std::vector<std::uint8_t> shaded_bytes(n * 4);
+  for (size_t i = 0; i < n; ++i) {
+    for (int c = 0; c < 4; ++c) {
+      const float v = shaded[i][c];
+      if (!std::isfinite(v)) ++shaded_nonfinite;
+      shaded_bytes[i * 4 + static_cast<size_t>(c)] = static_cast<std::uint8_t>(
+          std::lround(255.0f * std::clamp(std::isfinite(v) ? v : 0.0f, 0.0f, 1.0f)));
+    }
+  }
+  error_.metrics.nonfinite_pixels += shaded_nonfinite;
+  error_image_ = {w, h, errorImage(shaded_bytes, rendered, truth)};
+  truth_image_ = {w, h, std::vector<std::uint8_t>(n * 4)};
+  for (size_t i = 0; i < n; ++i) {
+    // Truth lit white, shadowed black, not counted (no surface, facing away) dark blue.
+    const bool counted = truth[i] >= 0.0f;
+    const auto grey = static_cast<std::uint8_t>(std::lround(255.0f * std::max(truth[i], 0.0f)));
+    truth_image_.rgba[i * 4 + 0] = counted ? grey : 20;
+    truth_image_.rgba[i * 4 + 1] = counted ? grey : 24;
+    truth_image_.rgba[i * 4 + 2] = counted ? grey : 60;
+    truth_image_.rgba[i * 4 + 3] = 255;
+  }
+  error_.valid = true;
+  error_key_ = key;
+  measure_->setEnabled(was_enabled);
+  return error_;
+}
+
+Image Runner::readImage() const {
+  const int w = options_.width, h = options_.height;
+  Image image{w, h, std::vector<std::uint8_t>(static_cast<size_t>(w) * h * 4)};
+  glBindFramebuffer(GL_FRAMEBUFFER, gpu_->target->id());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  return image;
+}
+
+void Runner::drawPanel(Frame& frame) {
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(390, static_cast<float>(frame.height) - 16),
+                           ImGuiCond_FirstUseEver);
+  ImGui::Begin(name_.c_str());
+  ImGui::TextWrapped("%s", lesson_->title().c_str());
+  ImGui::TextDisabled("%s", lesson_->seeds().c_str());
+  ImGui::Separator();
+  ImGui::Text("frame %.2f ms", measure_->lastFrameMs());
+  const auto pass_ms = measure_->medianPassMs();
+  for (const auto& [pass, work] : measure_->lastFrameWork()) {
+    const auto it = pass_ms.find(pass);
+    ImGui::Text("  %-8s %7.2f ms %3lld draws %9lld fragments", pass.c_str(),
+                it == pass_ms.end() ? 0.0 : it->second, work.draw_calls, work.fragment_invocations);
+  }
+  for (const auto& [name, count] : measure_->lastFrameCounts()) {
+    ImGui::Text("  %s: %lld", name.c_str(), count);
+  }
+  if (options_.truth) {
+    if (error_.valid) {
+      const ErrorMetrics& e = error_.metrics;
+      ImGui::Text("vs truth: false shadow %.3f%%  false lit %.3f%%", e.false_shadow_pct,
+                  e.false_lit_pct);
+      ImGui::Text("  vis_mae %.4f  non-finite %lld%s", e.vis_mae, e.nonfinite_pixels,
+                  error_key_ == errorKey() ? "" : "  (stale: updating)");
+    } else {
+      ImGui::TextDisabled("vs truth: not measured yet");
+    }
+  }
+  if (ImGui::Button("Screenshot (F12)")) screenshot_requested_ = true;
+  ImGui::Separator();
+  params_.drawWidgets();
+  lesson_->panel(frame);
+  ImGui::End();
+}
+
+void Runner::writeReport(JsonWriter& json) {
+  json.beginObject();
+  json.value("lesson", name_);
+  json.value("renderer", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+  json.value("backend", window_ ? std::string("window") : options_.backend);
+  json.beginArray("size");
+  json.value("", options_.width);
+  json.value("", options_.height);
+  json.endArray();
+  json.value("frames", options_.frames);
+  params_.writeJson(json);
+  json.value("frame_ms", measure_->medianFrameMs());
+  json.beginObject("pass_ms");
+  for (const auto& [pass, ms] : measure_->medianPassMs()) json.value(pass, ms);
+  json.endObject();
+  json.beginObject("counters");
+  for (const auto& [pass, work] : measure_->lastFrameWork()) {
+    json.beginObject(pass);
+    json.value("draw_calls", work.draw_calls);
+    json.value("fragment_invocations", work.fragment_invocations);
+    json.endObject();
+  }
+  for (const auto& [name, count] : measure_->lastFrameCounts()) json.value(name, count);
+  json.endObject();
+  json.value("gl_errors", glErrors());
+  if (error_.valid) {
+    const ErrorMetrics& e = error_.metrics;
+    json.beginObject("error");
+    json.value("truth", e.truth);
+    json.value("false_shadow_pct", e.false_shadow_pct);
+    json.value("false_lit_pct", e.false_lit_pct);
+    json.value("vis_mae", e.vis_mae);
+    json.value("shade_mae", e.shade_mae);
+    json.value("nonfinite_pixels", e.nonfinite_pixels);
+    json.value("counted_pixels", e.counted_pixels);
+    json.endObject();
+  }
+  json.endObject();
+}
+
+void Runner::saveScreenshot(int width, int height) {
+  Image image{width, height, std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 4)};
+  glBindFramebuffer(GL_FRAMEBUFFER, window_ ? 0 : gpu_->target->id());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  const std::string path = name_ + "_screenshot_" + std::to_string(++screenshots_taken_) + ".png";
+  if (writePng(path, image)) {
+    std::printf("screenshot: %s\n", path.c_str());
+  } else {
+    std::fprintf(stderr, "screenshot: cannot write %s\n", path.c_str());
+  }
+}
+
+int Runner::run() {
+  const char* display = std::getenv("DISPLAY");
+  const bool has_display = display != nullptr && *display != '\0';
+  if (options_.headless || (!has_display && !options_.force_window)) {
+    if (!options_.headless) std::printf("%s: no display, rendering headless\n", name_.c_str());
+    return runHeadless();
+  }
+  return runWindow();
+}
+
+int Runner::runHeadless() {
+  initHeadless();
+  const std::string out = options_.out.empty() ? name_ + ".png" : options_.out;
+  renderFrame();  // warm-up: shader JIT and the first shadow map land here
+  measure_->clearHistory();
+  for (int i = 0; i < options_.frames; ++i) renderFrame();
+  const Image image = readImage();
+  if (options_.truth) measureError();
+  if (!writePng(out, image)) {
+    std::fprintf(stderr, "%s: cannot write %s\n", name_.c_str(), out.c_str());
+    return 1;
+  }
+  if (!options_.truth_out.empty() && !writePng(options_.truth_out, truth_image_)) return 1;
+  if (!options_.error_out.empty() && !writePng(options_.error_out, error_image_)) return 1;
+  if (!options_.report.empty()) {
+    JsonWriter json;
+    writeReport(json);
+    const std::string temporary = options_.report + ".partial";
+    std::ofstream(temporary) << json.str() << "\n";
+    std::filesystem::rename(temporary, options_.report);
+  }
+  const int errors = glErrors();
+  std::printf("%-28s %dx%d  frame %7.2f ms", out.c_str(), options_.width, options_.height,
+              measure_->medianFrameMs());
+  if (error_.valid) {
+    std::printf("  false shadow %6.2f%%  false lit %5.2f%%", error_.metrics.false_shadow_pct,
+                error_.metrics.false_lit_pct);
+  }
+  std::printf("  gl_errors %d\n", errors);
+  if (errors > 0) {
+    std::fprintf(stderr, "%s: %d GL error(s), last: %s\n", name_.c_str(), errors,
+                 GlErrorLog::last().c_str());
+    return 1;
+  }
+  return 0;
+}
+
+int Runner::runWindow() {
+  if (!glfwInit()) {
+    std::fprintf(stderr, "%s: GLFW cannot start (no display?); try --headless\n", name_.c_str());
+    return 1;
+  }
+  window_ = true;
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_STENCIL_BITS, 8);
+  GLFWwindow* window = glfwCreateWindow(
+      options_.width, options_.height, (name_ + ": " + lesson_->title()).c_str(), nullptr, nullptr);
+  if (window == nullptr) {
+    std::fprintf(stderr, "%s: cannot open a 4.5 core window; try --headless\n", name_.c_str());
+    return 1;
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(1);
+  if (gladLoadGL(glfwGetProcAddress) == 0) throw GlFailure("glad could not load GL");
+  gpu_ = std::make_unique<Gpu>();
+  gpu_->window = window;
+  GlErrorLog::install();
+  measure_ = std::make_unique<Measure>();
+  const auto dir = commonShaderDir();
+  gpu_->gbuffer = Program(dir / "gbuffer.vert", dir / "gbuffer.frag");
+  gpu_->image = Program(dir / "fullscreen.vert", dir / "image.frag");
+  gpu_->depth_inset = Program(dir / "fullscreen.vert", dir / "depth_inset.frag");
+  glGenVertexArrays(1, &gpu_->empty_vao);
+  for (const auto& object : scene_.objects) gpu_->meshes.emplace_back(object.mesh);
+  gpu_->ensureTargets(options_.width, options_.height);
+  lesson_->init();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+  gpu_->imgui = gpu_->imgui_glfw = true;
+
+  double last_x = 0, last_y = 0;
+  bool dragging = false;
+  auto changed_at = std::chrono::steady_clock::now();
+  std::string last_key;
+  while (!glfwWindowShouldClose(window)) {
+    glfwPollEvents();
+    const ImGuiIO& io = ImGui::GetIO();
+    // Orbit the eye around its target with the left mouse button, zoom with the wheel.
+    double x = 0, y = 0;
+    glfwGetCursorPos(window, &x, &y);
+    const bool down = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    if (down && !io.WantCaptureMouse) {
+      if (dragging) {
+        Param& pos = params_.at("camera.pos");
+        const glm::vec3 target = params_.at("camera.target").v();
+        glm::vec3 offset = pos.v() - target;
+        const float radius = glm::length(offset);
+        float yaw = std::atan2(offset.x, offset.z) - 0.01f * static_cast<float>(x - last_x);
+        float pitch = std::asin(std::clamp(offset.y / std::max(radius, 1e-6f), -1.0f, 1.0f)) +
+                      0.01f * static_cast<float>(y - last_y);
+        pitch = std::clamp(pitch, -1.5f, 1.5f);
+        offset = radius * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
+                                    std::cos(pitch) * std::cos(yaw));
+        params_.setVec3(pos, target + offset);
+      }
+      dragging = true;
+    } else {
+      dragging = false;
+    }
+    last_x = x, last_y = y;
+    if (io.MouseWheel != 0.0f && !io.WantCaptureMouse) {
+      Param& pos = params_.at("camera.pos");
+      const glm::vec3 target = params_.at("camera.target").v();
+      params_.setVec3(pos, target + (pos.v() - target) * std::pow(0.9f, io.MouseWheel));
+    }
+    if (glfwGetKey(window, GLFW_KEY_F12) == GLFW_PRESS) screenshot_requested_ = true;
+
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window, &w, &h);
+    if (w > 0 && h > 0) {
+      options_.width = w, options_.height = h;
+      gpu_->ensureTargets(w, h);
+      // The truth is re-measured once the sliders rest (it costs a few hundred ms).
+      const std::string key = errorKey();
+      if (key != last_key) changed_at = std::chrono::steady_clock::now(), last_key = key;
+      const bool resting =
+          std::chrono::steady_clock::now() - changed_at > std::chrono::milliseconds(300);
+      if (options_.truth && resting && key != error_key_ && !ImGui::IsAnyItemActive()) {
+        measureError();
+      }
+      renderInto(0, w, h, params_.at("view").choice(), true, true);
+      GlErrorLog::poll();
+      if (screenshot_requested_) {
+        screenshot_requested_ = false;
+        saveScreenshot(w, h);
+      }
+    }
+    glfwSwapBuffers(window);
+  }
+  gpu_.reset();
+  glfwDestroyWindow(window);
+  return 0;
+}
+
+int runLessonMain(int argc, char** argv) {
+  const auto lessons = registeredLessons();
+  if (lessons.size() != 1) {
+    std::fprintf(stderr, "expected exactly one lesson in this binary\n");
+    return 1;
+  }
+  RunOptions options;
+  if (std::string e = parseCommandLine(argc, argv, options); !e.empty()) {
+    std::fprintf(stderr, "%s: %s\n", lessons[0].c_str(), e.c_str());
+    return 2;
+  }
+  if (options.help) {
+    std::printf(kUsage, argv[0]);
+    return 0;
+  }
+  try {
+    Runner runner(lessons[0], makeLesson(lessons[0]), options);
+    if (std::string e = runner.applySets(options.sets); !e.empty()) {
+      std::fprintf(stderr, "%s: %s\n", lessons[0].c_str(), e.c_str());
+      return 2;
+    }
+    if (options.list_params) {
+      std::printf("%s", runner.params().listText().c_str());
+      return 0;
+    }
+    return runner.run();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: %s\n", lessons[0].c_str(), e.what());
+    return 1;
+  }
+}
+
+}  // namespace shadows

@@ -1,0 +1,192 @@
+// The lesson base class and the runner around it: command line, window (GLFW + ImGui) or
+// headless (OSMesa/EGL + ImGui into the same framebuffer), main loop, truth, report.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gl.hpp"
+#include "image.hpp"
+#include "measure.hpp"
+#include "params.hpp"
+#include "scene.hpp"
+#include "shadow_math.hpp"
+#include "truth.hpp"
+
+namespace shadows {
+
+class JsonWriter;
+
+// The light as the shared parameters describe it this frame.
+struct Light {
+  bool directional = false;
+  glm::vec3 position{0.0f}, target{0.0f}, direction{0.0f, -1.0f, 0.0f};
+  float fov = 60.0f, extent = 10.0f, near = 1.0f, far = 20.0f;
+  glm::mat4 view{1.0f};
+  LightFrustum frustum(float aspect) const { return {directional, fov, extent, aspect, near, far}; }
+};
+
+// Which objects a draw takes.
+enum class Objects { All, Casters, Receivers };
+
+class Runner;
+
+// What a lesson's render() sees: the scene, the camera, the light, the target to draw into.
+struct Frame {
+  Frame(Runner& runner_, Params& params_, const Scene& scene_, Measure& measure_,
+        const Light& light_)
+      : runner(runner_), params(params_), scene(scene_), measure(measure_), light(light_) {}
+  Runner& runner;
+  Params& params;
+  const Scene& scene;
+  Measure& measure;
+  const Light& light;
+  glm::mat4 view{1.0f}, projection{1.0f};
+  glm::vec3 eye{0.0f};
+  int width = 0, height = 0;
+  GLuint target = 0;
+  std::string mode;  // the view to render: "shaded", "visibility" or a lesson debug view
+
+  // Outputs the runner uses: the light frustum the shadow term is valid in (pixels
+  // outside it are not counted against the truth).
+  std::optional<glm::mat4> light_view_projection;
+
+  void bindTarget() const;
+  // Draws objects with `program`, setting uModel and uColor per object. With `cull`, objects
+  // whose bounds lie outside that view-projection are skipped and counted as culled.
+  void drawObjects(const Program& program, Objects which, const glm::mat4* cull = nullptr) const;
+  // Light position/direction, eye and dimming uniforms of common/shaders/lighting.glsl.
+  void setLightingUniforms(const Program& program, float dimming) const;
+  // A depth texture in a corner of the target, or over all of it (linearized for a
+  // perspective light, whose raw depths crowd near 1).
+  void drawDepthInset(const Texture& depth, float near, float far, bool perspective,
+                      bool fullscreen = false) const;
+};
+
+class Lesson {
+ public:
+  virtual ~Lesson() = default;
+  virtual std::string title() const = 0;
+  virtual std::string seeds() const = 0;  // which seed slides it follows, one line
+  // Debug views beyond shaded and visibility (the runner adds truth and error).
+  virtual std::vector<std::string> debugViews() const { return {}; }
+  virtual void declare(Params& params) = 0;  // lesson parameters
+  virtual void init() = 0;                   // GL resources (context is current)
+  virtual void render(Frame& frame) = 0;     // draw frame.mode into frame.target
+  virtual void panel(Frame&) {}              // extra ImGui lines under the sliders
+  // A path next to the lesson's main.cpp, fixed at build time (never the working directory).
+  static std::filesystem::path lessonFile(const std::string& lessonDir, const std::string& file) {
+    return std::filesystem::path(lessonDir) / file;
+  }
+};
+
+using LessonFactory = std::function<std::unique_ptr<Lesson>()>;
+struct LessonRegistrar {
+  LessonRegistrar(const std::string& name, LessonFactory factory);
+};
+std::unique_ptr<Lesson> makeLesson(const std::string& name);
+std::vector<std::string> registeredLessons();
+
+#define SHADOWS_LESSON(Class)                                \
+  static const ::shadows::LessonRegistrar kRegistrar##Class( \
+      LESSON_NAME, [] { return std::make_unique<Class>(); })
+
+struct RunOptions {
+  bool headless = false;
+  bool force_window = false;
+  std::string backend = "osmesa";
+  int width = 800, height = 600;
+  int frames = 5;
+  bool panel = false;  // draw the ImGui panel into headless snapshots too
+  bool truth = true;   // measure error against the ray-traced truth
+  std::string out, report, truth_out, error_out;
+  std::vector<std::string> sets;
+  bool list_params = false, help = false;
+};
+
+// Parses argv. Returns "" or one line naming what is wrong (the caller exits 2).
+std::string parseCommandLine(int argc, char** argv, RunOptions& options);
+
+struct ErrorState {
+  ErrorMetrics metrics;
+  bool valid = false;
+};
+
+class Runner {
+ public:
+  Runner(const std::string& lessonName, std::unique_ptr<Lesson> lesson, RunOptions options);
+  ~Runner();
+
+  // Applies the --set list (scene first, so presets do not override the rest).
+  // Returns "" or the first error.
+  std::string applySets(const std::vector<std::string>& sets);
+  // Headless: creates the context and GL resources. Throws GlFailure.
+  void initHeadless();
+  // Renders one frame into the runner's framebuffer (headless) or the window.
+  void renderFrame();
+  // Feeds ImGui a mouse state for the next frame (headless tests drive the panel this way).
+  void setMouse(glm::vec2 position, bool leftDown);
+  // Computes visibility, truth and metrics for the current parameters.
+  const ErrorState& measureError();
+  Image readImage() const;
+  std::vector<float> renderVisibility();
+
+  Params& params() { return params_; }
+  Measure& measure() { return *measure_; }
+  Lesson& lesson() { return *lesson_; }
+  const Scene& scene() const { return scene_; }
+  const std::string& lessonName() const { return name_; }
+  const RunOptions& options() const { return options_; }
+  int glErrors() const;
+  void writeReport(JsonWriter& json);
+
+  // Runs the whole program (window or headless) and returns the exit code.
+  int run();
+
+  // For Frame helpers.
+  void drawObjects(const Frame& frame, const Program& program, Objects which,
+                   const glm::mat4* cull) const;
+  void drawInset(const Frame& frame, const Texture& depth, float near, float far, bool perspective,
+                 bool fullscreen) const;
+
+ private:
+  struct Gpu;
+  void declareShared();
+  void loadScene();
+  Light currentLight() const;
+  std::string errorKey() const;
+  void saveScreenshot(int width, int height);
+  void renderInto(GLuint target, int width, int height, const std::string& mode, bool timed,
+                  bool withPanel);
+  void drawPanel(Frame& frame);
+  void showImage(const Image& image, GLuint target, int width, int height);
+  int runWindow();
+  int runHeadless();
+
+  std::string name_;
+  std::unique_ptr<Lesson> lesson_;
+  RunOptions options_;
+  Params params_;
+  Scene scene_;
+  std::unique_ptr<Measure> measure_;
+  std::unique_ptr<Gpu> gpu_;
+  std::unique_ptr<Truth> truth_;
+  ErrorState error_;
+  std::string error_key_;
+  Image error_image_, truth_image_;
+  std::optional<glm::mat4> light_frustum_;
+  glm::vec2 mouse_{-1.0f};
+  bool mouse_down_ = false;
+  double last_time_ = 0.0;
+  bool window_ = false;
+  bool screenshot_requested_ = false;
+  int screenshots_taken_ = 0;
+};
+
+// main() of every lesson binary: parse, run, exit code (0 ok, 1 runtime failure, 2 bad input).
+int runLessonMain(int argc, char** argv);
+
+}  // namespace shadows

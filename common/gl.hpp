@@ -1,0 +1,150 @@
+// Thin RAII over the GL objects the lessons use, shader programs built from files with
+// #include and file:line errors, and the debug-output callback that counts GL errors.
+#pragma once
+
+#include <glad/gl.h>
+
+#include <filesystem>
+#include <glm/glm.hpp>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "scene.hpp"
+
+namespace shadows {
+
+// A runtime failure: no context, a shader that does not compile (message has file:line).
+struct GlFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Moves, never copies, a GL name; the deleter runs once.
+template <void (*Delete)(GLuint)>
+class GlName {
+ public:
+  GlName() = default;
+  explicit GlName(GLuint id) : id_(id) {}
+  GlName(GlName&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
+  GlName& operator=(GlName&& o) noexcept {
+    if (this != &o) {
+      reset();
+      id_ = std::exchange(o.id_, 0);
+    }
+    return *this;
+  }
+  GlName(const GlName&) = delete;
+  GlName& operator=(const GlName&) = delete;
+  ~GlName() { reset(); }
+  void reset() {
+    if (id_ != 0) Delete(id_);
+    id_ = 0;
+  }
+  GLuint id() const { return id_; }
+  explicit operator bool() const { return id_ != 0; }
+
+ private:
+  GLuint id_ = 0;
+};
+
+void deleteTexture(GLuint id);
+void deleteFramebuffer(GLuint id);
+void deleteBuffer(GLuint id);
+void deleteVertexArray(GLuint id);
+void deleteProgram(GLuint id);
+void deleteQuery(GLuint id);
+
+class Texture {
+ public:
+  // A depth texture for a shadow map: bits = 16, 24 or 32 (32 = float).
+  static Texture depth(int width, int height, int bits);
+  // Depth + stencil for the runner's own colour targets (GL_DEPTH24_STENCIL8).
+  static Texture depthStencil(int width, int height);
+  // A colour texture: GL_RGBA8, GL_RGBA32F, GL_R8, ...
+  static Texture color(int width, int height, GLenum internalFormat);
+  void bind(int unit) const;
+  void setFilter(GLenum minMag) const;
+  // Makes a depth texture a sampler2DShadow (GL_COMPARE_REF_TO_TEXTURE) or a plain one.
+  void setCompare(bool compare) const;
+  GLuint id() const { return name_.id(); }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ private:
+  GlName<deleteTexture> name_;
+  int width_ = 0, height_ = 0;
+};
+
+class Framebuffer {
+ public:
+  Framebuffer();
+  void attachDepth(const Texture& depth);
+  void attachDepthStencil(const Texture& depthStencil);
+  void attachColor(const Texture& color, int index = 0);
+  void check() const;  // throws GlFailure when incomplete
+  void bind() const;
+  GLuint id() const { return name_.id(); }
+
+ private:
+  GlName<deleteFramebuffer> name_;
+  std::vector<GLenum> draw_buffers_;
+};
+
+class Mesh {
+ public:
+  Mesh() = default;
+  explicit Mesh(const MeshData& data);
+  void draw() const;
+  GLsizei indexCount() const { return index_count_; }
+
+ private:
+  GlName<deleteVertexArray> vao_;
+  GlName<deleteBuffer> vbo_, ebo_;
+  GLsizei index_count_ = 0;
+};
+
+// A vertex + fragment program read from files. `#include "x.glsl"` is resolved against the
+// including file's directory, then the shared common/shaders directory. Compile errors
+// name the original file and line.
+class Program {
+ public:
+  Program() = default;
+  Program(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile);
+  void use() const;
+  GLint location(const std::string& name) const;
+  void set(const std::string& name, int v) const;
+  void set(const std::string& name, float v) const;
+  void set(const std::string& name, const glm::vec2& v) const;
+  void set(const std::string& name, const glm::vec3& v) const;
+  void set(const std::string& name, const glm::vec4& v) const;
+  void set(const std::string& name, const glm::mat4& v) const;
+  GLuint id() const { return name_.id(); }
+
+ private:
+  GlName<deleteProgram> name_;
+  mutable std::map<std::string, GLint> locations_;
+};
+
+// The preprocessed source and the file behind each GLSL source-string number.
+struct ShaderSource {
+  std::string text;
+  std::vector<std::string> files;
+};
+ShaderSource preprocessShader(const std::filesystem::path& file);
+// Rewrites "0:12(5): error" style compiler messages into "file.frag:12: error".
+std::string mapShaderLog(const std::string& log, const std::vector<std::string>& files);
+std::filesystem::path commonShaderDir();
+
+// Counts GL errors reported through KHR_debug, and glGetError as a backstop.
+class GlErrorLog {
+ public:
+  static void install();  // call once per context, after loading GL
+  static int poll();      // drains glGetError into the count; returns the total so far
+  static int count();
+  static void reset();
+  static const std::string& last();
+};
+
+}  // namespace shadows

@@ -1,0 +1,88 @@
+// A small streaming JSON writer for reports: enough for objects, arrays, numbers, strings.
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace shadows {
+
+class JsonWriter {
+ public:
+  JsonWriter& beginObject(const std::string& key = {}) { return open(key, '{'); }
+  JsonWriter& endObject() { return close('}'); }
+  JsonWriter& beginArray(const std::string& key = {}) { return open(key, '['); }
+  JsonWriter& endArray() { return close(']'); }
+  JsonWriter& value(const std::string& key, double v) {
+    item(key);
+    if (!std::isfinite(v)) {
+      out_ += "null";  // JSON has no NaN; a non-finite number reads as null
+    } else {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.6g", v);
+      out_ += buf;
+    }
+    return *this;
+  }
+  JsonWriter& value(const std::string& key, long long v) {
+    item(key);
+    out_ += std::to_string(v);
+    return *this;
+  }
+  JsonWriter& value(const std::string& key, int v) { return value(key, static_cast<long long>(v)); }
+  JsonWriter& value(const std::string& key, bool v) {
+    item(key);
+    out_ += v ? "true" : "false";
+    return *this;
+  }
+  JsonWriter& value(const std::string& key, const std::string& v) {
+    item(key);
+    out_ += quote(v);
+    return *this;
+  }
+  JsonWriter& value(const std::string& key, const char* v) { return value(key, std::string(v)); }
+  const std::string& str() const { return out_; }
+
+  static std::string quote(const std::string& s) {
+    std::string q = "\"";
+    for (char c : s) {
+      if (c == '"' || c == '\\') {
+        q += '\\';
+        q += c;
+      } else if (static_cast<unsigned char>(c) < 0x20) {
+        char buf[8];
+        std::snprintf(buf, sizeof buf, "\\u%04x", c);
+        q += buf;
+      } else {
+        q += c;
+      }
+    }
+    return q + "\"";
+  }
+
+ private:
+  JsonWriter& open(const std::string& key, char bracket) {
+    item(key);
+    out_ += bracket;
+    first_.push_back(true);
+    return *this;
+  }
+  JsonWriter& close(char bracket) {
+    first_.pop_back();
+    out_ += '\n' + std::string(2 * first_.size(), ' ') + bracket;
+    return *this;
+  }
+  void item(const std::string& key) {
+    if (!first_.empty()) {
+      if (!first_.back()) out_ += ',';
+      first_.back() = false;
+      out_ += '\n' + std::string(2 * first_.size(), ' ');
+    }
+    if (!key.empty()) out_ += quote(key) + ": ";
+  }
+  std::string out_;
+  std::vector<bool> first_;
+};
+
+}  // namespace shadows

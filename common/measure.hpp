@@ -1,0 +1,72 @@
+// Timing and work counters. Wall time bracketed by glFinish (llvmpipe's GL_TIME_ELAPSED is
+// wrong by orders of magnitude); fragment-shader invocations from
+// GL_ARB_pipeline_statistics_query; draw calls counted by Mesh::draw and friends.
+#pragma once
+
+#include <chrono>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "gl.hpp"
+
+namespace shadows {
+
+struct PassWork {
+  long long draw_calls = 0;
+  long long fragment_invocations = 0;
+};
+
+// Every draw the lessons issue goes through here, so passes can count them.
+void countDrawCall();
+long long drawCallsSoFar();
+
+class Measure {
+ public:
+  Measure();
+  // When off (the runner's own truth renders), nothing is timed or counted.
+  void setEnabled(bool enabled) { enabled_ = enabled; }
+  bool enabled() const { return enabled_; }
+
+  void beginFrame();
+  void endFrame();  // glFinish, then the frame's wall time
+
+  class Pass {
+   public:
+    Pass(Measure* owner, std::string name);
+    Pass(Pass&&) = delete;
+    ~Pass();
+
+   private:
+    Measure* owner_;
+    std::string name_;
+    std::chrono::steady_clock::time_point start_;
+    long long draws_at_start_ = 0;
+  };
+  // RAII: `auto timing = measure.pass("shadow");` around one pass.
+  [[nodiscard]] Pass pass(const std::string& name) { return Pass(enabled_ ? this : nullptr, name); }
+
+  // An event counter for this frame, e.g. "shadow_map_renders".
+  void count(const std::string& name, long long amount = 1);
+
+  // Drop everything recorded so far (after the warm-up frame).
+  void clearHistory();
+  double medianFrameMs() const;
+  std::map<std::string, double> medianPassMs() const;
+  const std::map<std::string, PassWork>& lastFrameWork() const { return last_work_; }
+  const std::map<std::string, long long>& lastFrameCounts() const { return last_counts_; }
+  double lastFrameMs() const { return frame_ms_.empty() ? 0.0 : frame_ms_.back(); }
+
+ private:
+  bool enabled_ = true;
+  GlName<deleteQuery> query_;
+  std::chrono::steady_clock::time_point frame_start_;
+  std::vector<double> frame_ms_;
+  std::map<std::string, std::vector<double>> pass_ms_;
+  std::map<std::string, PassWork> work_, last_work_;
+  std::map<std::string, long long> counts_, last_counts_;
+};
+
+double median(std::vector<double> values);
+
+}  // namespace shadows

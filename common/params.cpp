@@ -1,0 +1,362 @@
+#include "params.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+
+#include "json.hpp"
+
+namespace shadows {
+
+namespace {
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+bool parseNumber(const std::string& text, double& out) {
+  if (text.empty()) return false;
+  errno = 0;
+  char* end = nullptr;
+  out = std::strtod(text.c_str(), &end);
+  return errno == 0 && end == text.c_str() + text.size() && std::isfinite(out);
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string s;
+  for (const auto& item : items) s += (s.empty() ? "" : ", ") + item;
+  return s;
+}
+
+const char* kindName(ParamKind kind) {
+  switch (kind) {
+    case ParamKind::Float:
+      return "float";
+    case ParamKind::Int:
+      return "int";
+    case ParamKind::Bool:
+      return "bool";
+    case ParamKind::Vec3:
+      return "vec3";
+    case ParamKind::Choice:
+      return "choice";
+  }
+  return "?";
+}
+
+std::string allowed(const Param& p) {
+  switch (p.kind) {
+    case ParamKind::Float:
+      return "a number in [" + number(p.min) + ", " + number(p.max) + "]";
+    case ParamKind::Int:
+      return "an integer in [" + number(p.min) + ", " + number(p.max) + "]";
+    case ParamKind::Bool:
+      return "true or false";
+    case ParamKind::Vec3:
+      return "x,y,z with each in [" + number(p.min) + ", " + number(p.max) + "]";
+    case ParamKind::Choice:
+      return "one of " + joined(p.choices);
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string Param::text() const {
+  switch (kind) {
+    case ParamKind::Float:
+    case ParamKind::Int:
+      return number(value[0]);
+    case ParamKind::Bool:
+      return b() ? "true" : "false";
+    case ParamKind::Vec3:
+      return number(value[0]) + "," + number(value[1]) + "," + number(value[2]);
+    case ParamKind::Choice:
+      return choice();
+  }
+  return {};
+}
+
+Param& Params::add(Param p) {
+  if (find(p.name) != nullptr) throw std::logic_error("parameter declared twice: " + p.name);
+  std::copy(std::begin(p.value), std::end(p.value), std::begin(p.fallback));
+  params_.push_back(std::move(p));
+  dirty_ |= params_.back().affects;
+  return params_.back();
+}
+
+Param& Params::addFloat(const std::string& name, float def, float min, float max,
+                        const std::string& help, std::uint32_t affects) {
+  Param p;
+  p.name = name, p.help = help, p.kind = ParamKind::Float, p.min = min, p.max = max;
+  p.value[0] = def, p.affects = affects;
+  return add(std::move(p));
+}
+
+Param& Params::addInt(const std::string& name, int def, int min, int max, const std::string& help,
+                      std::uint32_t affects) {
+  Param p;
+  p.name = name, p.help = help, p.kind = ParamKind::Int, p.min = min, p.max = max;
+  p.value[0] = def, p.affects = affects;
+  return add(std::move(p));
+}
+
+Param& Params::addBool(const std::string& name, bool def, const std::string& help,
+                       std::uint32_t affects) {
+  Param p;
+  p.name = name, p.help = help, p.kind = ParamKind::Bool, p.min = 0, p.max = 1;
+  p.value[0] = def ? 1 : 0, p.affects = affects;
+  return add(std::move(p));
+}
+
+Param& Params::addVec3(const std::string& name, glm::vec3 def, float min, float max,
+                       const std::string& help, std::uint32_t affects) {
+  Param p;
+  p.name = name, p.help = help, p.kind = ParamKind::Vec3, p.min = min, p.max = max;
+  p.value[0] = def.x, p.value[1] = def.y, p.value[2] = def.z, p.affects = affects;
+  return add(std::move(p));
+}
+
+Param& Params::addChoice(const std::string& name, const std::vector<std::string>& choices,
+                         const std::string& def, const std::string& help, std::uint32_t affects) {
+  Param p;
+  p.name = name, p.help = help, p.kind = ParamKind::Choice, p.choices = choices;
+  p.min = 0, p.max = static_cast<double>(choices.size()) - 1, p.affects = affects;
+  const auto it = std::find(choices.begin(), choices.end(), def);
+  if (it == choices.end()) throw std::logic_error(name + ": default is not a choice");
+  p.value[0] = static_cast<double>(it - choices.begin());
+  return add(std::move(p));
+}
+
+Param* Params::find(const std::string& name) {
+  for (auto& p : params_) {
+    if (p.name == name) return &p;
+  }
+  return nullptr;
+}
+
+Param& Params::at(const std::string& name) {
+  if (Param* p = find(name)) return *p;
+  throw std::out_of_range("no parameter named " + name);
+}
+
+std::string Params::set(const std::string& name, const std::string& text) {
+  Param* p = find(name);
+  if (p == nullptr) {
+    std::string names;
+    for (const auto& q : params_) names += (names.empty() ? "" : ", ") + q.name;
+    return "unknown parameter '" + name + "'; parameters are: " + names;
+  }
+  const std::string bad = name + ": '" + text + "' is not allowed; expected " + allowed(*p);
+  double parsed[3] = {0, 0, 0};
+  switch (p->kind) {
+    case ParamKind::Float:
+    case ParamKind::Int:
+      if (!parseNumber(text, parsed[0])) return bad;
+      if (p->kind == ParamKind::Int && parsed[0] != std::floor(parsed[0])) return bad;
+      if (parsed[0] < p->min || parsed[0] > p->max) return bad;
+      break;
+    case ParamKind::Bool:
+      if (text == "true" || text == "1" || text == "on") {
+        parsed[0] = 1;
+      } else if (text == "false" || text == "0" || text == "off") {
+        parsed[0] = 0;
+      } else {
+        return bad;
+      }
+      break;
+    case ParamKind::Vec3: {
+      std::stringstream in(text);
+      std::string part;
+      int n = 0;
+      while (std::getline(in, part, ',')) {
+        if (n == 3 || !parseNumber(part, parsed[n])) return bad;
+        if (parsed[n] < p->min || parsed[n] > p->max) return bad;
+        ++n;
+      }
+      if (n != 3 || text.back() == ',') return bad;
+      break;
+    }
+    case ParamKind::Choice: {
+      const auto it = std::find(p->choices.begin(), p->choices.end(), text);
+      if (it == p->choices.end()) return bad;
+      parsed[0] = static_cast<double>(it - p->choices.begin());
+      break;
+    }
+  }
+  if (!std::equal(std::begin(parsed), std::end(parsed), std::begin(p->value))) {
+    std::copy(std::begin(parsed), std::end(parsed), std::begin(p->value));
+    changed(*p);
+  }
+  return {};
+}
+
+std::string Params::assign(const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    return "--set wants name=value, got '" + assignment + "'";
+  }
+  return set(assignment.substr(0, eq), assignment.substr(eq + 1));
+}
+
+void Params::setFloat(Param& p, double v) {
+  v = std::clamp(v, p.min, p.max);
+  if (p.kind == ParamKind::Int || p.kind == ParamKind::Choice || p.kind == ParamKind::Bool) {
+    v = std::round(v);
+  }
+  if (p.value[0] != v) {
+    p.value[0] = v;
+    changed(p);
+  }
+}
+
+void Params::setVec3(Param& p, glm::vec3 v) {
+  for (int k = 0; k < 3; ++k) {
+    const double c = std::clamp(static_cast<double>(v[k]), p.min, p.max);
+    if (p.value[k] != c) {
+      p.value[k] = c;
+      changed(p);
+    }
+  }
+}
+
+void Params::setChoice(Param& p, const std::string& choiceName) {
+  const auto it = std::find(p.choices.begin(), p.choices.end(), choiceName);
+  if (it == p.choices.end()) throw std::logic_error(p.name + ": no choice " + choiceName);
+  setFloat(p, static_cast<double>(it - p.choices.begin()));
+}
+
+void Params::setDefaultVec3(Param& p, glm::vec3 v) {
+  setVec3(p, v);
+  std::copy(std::begin(p.value), std::end(p.value), std::begin(p.fallback));
+}
+
+void Params::setDefaultFloat(Param& p, double v) {
+  setFloat(p, v);
+  p.fallback[0] = p.value[0];
+}
+
+void Params::setDefaultChoice(Param& p, const std::string& choiceName) {
+  setChoice(p, choiceName);
+  p.fallback[0] = p.value[0];
+}
+
+bool Params::drawWidgets(const std::string& prefix) {
+  bool any = false;
+  for (auto& p : params_) {
+    if (p.name.rfind(prefix, 0) != 0) continue;
+    bool changed_now = false;
+    const ImGuiSliderFlags flags =
+        ImGuiSliderFlags_AlwaysClamp | (p.logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
+    switch (p.kind) {
+      case ParamKind::Float: {
+        float v = p.f();
+        const float lo = static_cast<float>(p.min), hi = static_cast<float>(p.max);
+        if (ImGui::SliderFloat(p.name.c_str(), &v, lo, hi, "%.4g", flags)) {
+          setFloat(p, v);
+          changed_now = true;
+        }
+        break;
+      }
+      case ParamKind::Int: {
+        int v = p.i();
+        const int lo = static_cast<int>(p.min), hi = static_cast<int>(p.max);
+        if (ImGui::SliderInt(p.name.c_str(), &v, lo, hi, "%d", flags)) {
+          setFloat(p, v);
+          changed_now = true;
+        }
+        break;
+      }
+      case ParamKind::Bool: {
+        bool v = p.b();
+        if (ImGui::Checkbox(p.name.c_str(), &v)) {
+          setFloat(p, v ? 1 : 0);
+          changed_now = true;
+        }
+        break;
+      }
+      case ParamKind::Vec3: {
+        glm::vec3 v = p.v();
+        const float lo = static_cast<float>(p.min), hi = static_cast<float>(p.max);
+        if (ImGui::DragFloat3(p.name.c_str(), &v.x, 0.05f, lo, hi, "%.2f", flags)) {
+          setVec3(p, v);
+          changed_now = true;
+        }
+        break;
+      }
+      case ParamKind::Choice: {
+        int v = p.i();
+        if (ImGui::BeginCombo(p.name.c_str(), p.choice().c_str())) {
+          for (int k = 0; k < static_cast<int>(p.choices.size()); ++k) {
+            if (ImGui::Selectable(p.choices[static_cast<size_t>(k)].c_str(), k == v)) {
+              setFloat(p, k);
+              changed_now = true;
+            }
+          }
+          ImGui::EndCombo();
+        }
+        break;
+      }
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", p.help.c_str());
+    any = any || changed_now;
+  }
+  return any;
+}
+
+std::string Params::listText() const {
+  std::string out;
+  char line[512];
+  for (const auto& p : params_) {
+    Param fallback = p;
+    std::copy(std::begin(p.fallback), std::end(p.fallback), std::begin(fallback.value));
+    std::string range;
+    if (p.kind == ParamKind::Choice) {
+      range = joined(p.choices);
+    } else if (p.kind != ParamKind::Bool) {
+      range = "[" + number(p.min) + ", " + number(p.max) + "]";
+    } else {
+      range = "true, false";
+    }
+    std::snprintf(line, sizeof line, "%-18s %-6s default %-14s %-28s %s\n", p.name.c_str(),
+                  kindName(p.kind), fallback.text().c_str(), range.c_str(), p.help.c_str());
+    out += line;
+  }
+  return out;
+}
+
+void Params::writeJson(JsonWriter& json) const {
+  json.beginObject("params");
+  for (const auto& p : params_) {
+    switch (p.kind) {
+      case ParamKind::Float:
+        json.value(p.name, p.value[0]);
+        break;
+      case ParamKind::Int:
+        json.value(p.name, static_cast<long long>(p.value[0]));
+        break;
+      case ParamKind::Bool:
+        json.value(p.name, p.b());
+        break;
+      case ParamKind::Vec3:
+        json.beginArray(p.name);
+        for (double c : p.value) json.value("", c);
+        json.endArray();
+        break;
+      case ParamKind::Choice:
+        json.value(p.name, p.choice());
+        break;
+    }
+  }
+  json.endObject();
+}
+
+}  // namespace shadows

@@ -1,0 +1,105 @@
+// A parameter is declared once (name, default, range, help). From that one declaration it
+// gets its ImGui widget, `--set name=value`, its `--list-params` line and its report value.
+// Changing one marks what depends on it dirty, so lessons redo only that work.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+namespace shadows {
+
+class JsonWriter;
+
+// What a parameter change invalidates. Lessons test these bits to skip work.
+enum DirtyBits : std::uint32_t {
+  kDirtyNothing = 0,
+  kDirtyShadowMap = 1u << 0,  // the shadow map must be rendered again
+  kDirtyScene = 1u << 1,      // objects or the scene preset changed
+  kDirtyResources = 1u << 2,  // textures must be re-created (size, format)
+  kDirtyView = 1u << 3,       // only the eye view changes
+  kDirtyAll = 0xffffffffu,
+};
+
+enum class ParamKind { Float, Int, Bool, Vec3, Choice };
+
+struct Param {
+  std::string name;
+  std::string help;
+  ParamKind kind = ParamKind::Float;
+  double value[3] = {0, 0, 0};
+  double fallback[3] = {0, 0, 0};  // the declared default
+  double min = 0, max = 1;
+  bool logarithmic = false;
+  std::vector<std::string> choices;
+  std::uint32_t affects = kDirtyView;
+
+  float f() const { return static_cast<float>(value[0]); }
+  int i() const { return static_cast<int>(value[0]); }
+  bool b() const { return value[0] != 0.0; }
+  glm::vec3 v() const {
+    return {static_cast<float>(value[0]), static_cast<float>(value[1]),
+            static_cast<float>(value[2])};
+  }
+  const std::string& choice() const { return choices[static_cast<size_t>(value[0])]; }
+  bool is(const std::string& choiceName) const { return choice() == choiceName; }
+  std::string text() const;  // the value as --set would take it
+};
+
+class Params {
+ public:
+  Param& addFloat(const std::string& name, float def, float min, float max, const std::string& help,
+                  std::uint32_t affects = kDirtyView);
+  Param& addInt(const std::string& name, int def, int min, int max, const std::string& help,
+                std::uint32_t affects = kDirtyView);
+  Param& addBool(const std::string& name, bool def, const std::string& help,
+                 std::uint32_t affects = kDirtyView);
+  Param& addVec3(const std::string& name, glm::vec3 def, float min, float max,
+                 const std::string& help, std::uint32_t affects = kDirtyView);
+  Param& addChoice(const std::string& name, const std::vector<std::string>& choices,
+                   const std::string& def, const std::string& help,
+                   std::uint32_t affects = kDirtyView);
+
+  Param* find(const std::string& name);
+  Param& at(const std::string& name);  // throws std::out_of_range naming the parameter
+  const std::deque<Param>& all() const { return params_; }
+
+  // Parses and applies `value`; returns "" on success, else one line naming the parameter
+  // and what is allowed. A failed set changes nothing.
+  std::string set(const std::string& name, const std::string& value);
+  // Applies "name=value"; same contract.
+  std::string assign(const std::string& assignment);
+  // Programmatic updates (slider drags, presets); clamps to range and marks dirty.
+  void setFloat(Param& p, double v);
+  void setVec3(Param& p, glm::vec3 v);
+  void setChoice(Param& p, const std::string& choiceName);
+  // A preset changes a default too, so "reset" goes back to the preset's value.
+  void setDefaultVec3(Param& p, glm::vec3 v);
+  void setDefaultFloat(Param& p, double v);
+  void setDefaultChoice(Param& p, const std::string& choiceName);
+
+  // One ImGui widget per parameter whose name starts with `prefix` ("" = all).
+  // Returns true when any changed.
+  bool drawWidgets(const std::string& prefix = {});
+  std::string listText() const;  // --list-params
+  void writeJson(JsonWriter& json) const;
+
+  std::uint32_t dirty() const { return dirty_; }
+  void markDirty(std::uint32_t bits) { dirty_ |= bits; }
+  // Returns whether any of `bits` were dirty and clears them.
+  bool consume(std::uint32_t bits) {
+    const bool any = (dirty_ & bits) != 0;
+    dirty_ &= ~bits;
+    return any;
+  }
+
+ private:
+  Param& add(Param p);
+  void changed(Param& p) { dirty_ |= p.affects; }
+  std::deque<Param> params_;  // deque: references stay valid as params are added
+  std::uint32_t dirty_ = kDirtyAll;
+};
+
+}  // namespace shadows

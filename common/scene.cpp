@@ -1,0 +1,213 @@
+#include "scene.hpp"
+
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <stdexcept>
+
+namespace shadows {
+
+namespace {
+
+constexpr float kPi = glm::pi<float>();
+
+void addQuad(MeshData& m, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, glm::vec3 n) {
+  const auto base = static_cast<std::uint32_t>(m.vertices.size());
+  for (glm::vec3 p : {a, b, c, d}) m.vertices.push_back({p, n});
+  for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) m.indices.push_back(base + i);
+}
+
+// A (u, v) grid of vertices from a parametric surface, wrapped into triangles.
+template <typename Surface>
+MeshData makeGrid(int uSegments, int vSegments, Surface surface) {
+  MeshData m;
+  for (int j = 0; j <= vSegments; ++j) {
+    for (int i = 0; i <= uSegments; ++i) {
+      const float u = static_cast<float>(i) / static_cast<float>(uSegments);
+      const float v = static_cast<float>(j) / static_cast<float>(vSegments);
+      m.vertices.push_back(surface(u, v));
+    }
+  }
+  const auto row = static_cast<std::uint32_t>(uSegments + 1);
+  for (int j = 0; j < vSegments; ++j) {
+    for (int i = 0; i < uSegments; ++i) {
+      const auto a = static_cast<std::uint32_t>(j) * row + static_cast<std::uint32_t>(i);
+      for (std::uint32_t k : {a, a + row, a + 1, a + 1, a + row, a + row + 1}) {
+        m.indices.push_back(k);
+      }
+    }
+  }
+  return m;
+}
+
+}  // namespace
+
+MeshData makePlane(float halfX, float halfZ) {
+  MeshData m;
+  addQuad(m, {-halfX, 0, halfZ}, {halfX, 0, halfZ}, {halfX, 0, -halfZ}, {-halfX, 0, -halfZ},
+          {0, 1, 0});
+  return m;
+}
+
+MeshData makeBox(glm::vec3 h) {
+  MeshData m;
+  // Each face counter-clockwise seen from outside.
+  addQuad(m, {h.x, -h.y, h.z}, {h.x, -h.y, -h.z}, {h.x, h.y, -h.z}, {h.x, h.y, h.z}, {1, 0, 0});
+  addQuad(m, {-h.x, -h.y, -h.z}, {-h.x, -h.y, h.z}, {-h.x, h.y, h.z}, {-h.x, h.y, -h.z},
+          {-1, 0, 0});
+  addQuad(m, {-h.x, h.y, h.z}, {h.x, h.y, h.z}, {h.x, h.y, -h.z}, {-h.x, h.y, -h.z}, {0, 1, 0});
+  addQuad(m, {-h.x, -h.y, -h.z}, {h.x, -h.y, -h.z}, {h.x, -h.y, h.z}, {-h.x, -h.y, h.z},
+          {0, -1, 0});
+  addQuad(m, {-h.x, -h.y, h.z}, {h.x, -h.y, h.z}, {h.x, h.y, h.z}, {-h.x, h.y, h.z}, {0, 0, 1});
+  addQuad(m, {h.x, -h.y, -h.z}, {-h.x, -h.y, -h.z}, {-h.x, h.y, -h.z}, {h.x, h.y, -h.z},
+          {0, 0, -1});
+  return m;
+}
+
+MeshData makeSphere(float radius, int slices, int stacks) {
+  return makeGrid(slices, stacks, [radius](float u, float v) {
+    const float phi = u * 2.0f * kPi, theta = v * kPi;
+    const glm::vec3 n{std::sin(theta) * std::cos(phi), -std::cos(theta),
+                      -std::sin(theta) * std::sin(phi)};
+    return Vertex{radius * n, n};
+  });
+}
+
+MeshData makeTorus(float ringRadius, float tubeRadius, int ringSegments, int tubeSegments) {
+  return makeGrid(ringSegments, tubeSegments, [=](float u, float v) {
+    const float a = u * 2.0f * kPi, b = v * 2.0f * kPi;
+    const glm::vec3 ring{std::cos(a), 0.0f, -std::sin(a)};
+    const glm::vec3 n = std::cos(b) * ring + glm::vec3(0.0f, std::sin(b), 0.0f);
+    return Vertex{ringRadius * ring + tubeRadius * n, n};
+  });
+}
+
+MeshData makePyramid(float halfBase, float height) {
+  MeshData m;
+  const glm::vec3 apex{0, height, 0};
+  const glm::vec3 corners[4] = {{-halfBase, 0, halfBase},
+                                {halfBase, 0, halfBase},
+                                {halfBase, 0, -halfBase},
+                                {-halfBase, 0, -halfBase}};
+  for (int i = 0; i < 4; ++i) {
+    const glm::vec3 a = corners[i], b = corners[(i + 1) % 4];
+    const glm::vec3 n = glm::normalize(glm::cross(b - a, apex - a));
+    const auto base = static_cast<std::uint32_t>(m.vertices.size());
+    for (glm::vec3 p : {a, b, apex}) m.vertices.push_back({p, n});
+    for (std::uint32_t k : {0u, 1u, 2u}) m.indices.push_back(base + k);
+  }
+  addQuad(m, corners[3], corners[2], corners[1], corners[0], {0, -1, 0});
+  return m;
+}
+
+Bounds SceneObject::worldBounds() const {
+  Bounds b;
+  for (const auto& v : mesh.vertices) b.add(glm::vec3(model * glm::vec4(v.position, 1.0f)));
+  return b;
+}
+
+Bounds Scene::bounds(bool castersOnly) const {
+  Bounds b;
+  for (const auto& o : objects) {
+    if (!castersOnly || o.caster) b.add(o.worldBounds());
+  }
+  return b;
+}
+
+void Scene::worldTriangles(std::vector<glm::vec3>& positions,
+                           std::vector<glm::uvec3>& triangles) const {
+  positions.clear();
+  triangles.clear();
+  for (const auto& o : objects) {
+    const auto base = static_cast<std::uint32_t>(positions.size());
+    for (const auto& v : o.mesh.vertices) {
+      positions.push_back(glm::vec3(o.model * glm::vec4(v.position, 1.0f)));
+    }
+    for (size_t i = 0; i + 2 < o.mesh.indices.size(); i += 3) {
+      triangles.push_back(
+          glm::uvec3(o.mesh.indices[i], o.mesh.indices[i + 1], o.mesh.indices[i + 2]) + base);
+    }
+  }
+}
+
+const std::vector<std::string>& scenePresets() {
+  static const std::vector<std::string> names = {"torus_pyramid", "grazing", "dueling", "cubes"};
+  return names;
+}
+
+namespace {
+
+glm::mat4 translate(glm::vec3 t) {
+  return glm::translate(glm::mat4(1.0f), t);
+}
+
+// A floor that receives but casts nothing (nothing lies below it), so the shadow pass can
+// skip it.
+SceneObject floorObject(float half, float y) {
+  return {"floor", makePlane(half, half), translate({0, y, 0}), {0.75f, 0.75f, 0.72f}, false, true};
+}
+
+Scene torusPyramid() {
+  Scene s;
+  s.objects.push_back(floorObject(8.0f, 0.0f));
+  // A torus tilted 60 degrees, resting on the floor: its lowest point is R sin(a) + r down.
+  const float ring = 1.0f, tube = 0.35f, tilt = glm::radians(60.0f);
+  const glm::mat4 torus = translate({-0.9f, ring * std::sin(tilt) + tube, 0.2f}) *
+                          glm::rotate(glm::mat4(1.0f), tilt, {1, 0, 0});
+  s.objects.push_back({"torus", makeTorus(ring, tube, 96, 48), torus, {0.85f, 0.45f, 0.25f}});
+  s.objects.push_back(
+      {"pyramid",
+       makePyramid(0.8f, 1.6f),
+       translate({1.6f, 0, -0.4f}) * glm::rotate(glm::mat4(1.0f), glm::radians(20.0f), {0, 1, 0}),
+       {0.3f, 0.55f, 0.85f}});
+  s.objects.push_back(
+      {"sphere", makeSphere(0.45f, 48, 24), translate({0.6f, 0.45f, 1.6f}), {0.5f, 0.8f, 0.4f}});
+  s.light = {false, {3.5f, 6.0f, 4.0f}, {0.0f, 0.5f, 0.0f}, 55.0f, 10.0f, 2.0f, 16.0f};
+  s.camera = {{0.0f, 4.0f, 7.5f}, {0.2f, 0.6f, 0.0f}, 45.0f, 0.1f, 100.0f};
+  return s;
+}
+
+}  // namespace
+
+Scene makeScene(const std::string& preset) {
+  Scene s;
+  if (preset == "torus_pyramid") {
+    s = torusPyramid();
+  } else if (preset == "grazing") {
+    // The same objects under a light barely above the horizon: long shadows, steep slopes
+    // in light space, the hardest case for a fixed bias.
+    s = torusPyramid();
+    s.light = {false, {-9.0f, 1.6f, 2.0f}, {1.0f, 0.2f, 0.0f}, 50.0f, 10.0f, 4.0f, 20.0f};
+  } else if (preset == "dueling") {
+    // Light and eye face each other: shadow-map texels near the eye are magnified most.
+    s = torusPyramid();
+    s.light = {false, {0.6f, 3.5f, -7.5f}, {0.0f, 0.3f, 0.5f}, 60.0f, 10.0f, 3.0f, 16.0f};
+  } else if (preset == "cubes") {
+    // LearnOpenGL's shadow-mapping scene, so the two can be compared on the same work.
+    s.objects.push_back(floorObject(25.0f, -0.5f));
+    const MeshData cube = makeBox(glm::vec3(1.0f));  // edge 2
+    const glm::mat4 one(1.0f);
+    s.objects.push_back({"cube_floating",
+                         cube,
+                         translate({0, 1.5f, 0}) * glm::scale(one, glm::vec3(0.5f)),
+                         {0.8f, 0.8f, 0.8f}});
+    s.objects.push_back({"cube_right",
+                         cube,
+                         translate({2, 0, 1}) * glm::scale(one, glm::vec3(0.5f)),
+                         {0.8f, 0.8f, 0.8f}});
+    s.objects.push_back(
+        {"cube_tilted",
+         cube,
+         translate({-1, 0, 2}) *
+             glm::rotate(one, glm::radians(60.0f), glm::normalize(glm::vec3(1, 0, 1))) *
+             glm::scale(one, glm::vec3(0.25f)),
+         {0.8f, 0.8f, 0.8f}});
+    s.light = {true, {-2.0f, 4.0f, -1.0f}, {0.0f, 0.0f, 0.0f}, 60.0f, 10.0f, 1.0f, 7.5f};
+    s.camera = {{0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, -1.0f}, 45.0f, 0.1f, 100.0f};
+  } else {
+    throw std::invalid_argument("unknown scene '" + preset + "'");
+  }
+  s.name = preset;
+  return s;
+}
+
+}  // namespace shadows

@@ -1,0 +1,82 @@
+// Procedural meshes and the named scene presets. One world-space triangle list feeds both
+// the rasterizer and the ray-traced truth, so both see exactly the same geometry.
+#pragma once
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+namespace shadows {
+
+struct Vertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+};
+
+struct MeshData {
+  std::vector<Vertex> vertices;
+  std::vector<std::uint32_t> indices;
+};
+
+MeshData makePlane(float halfX, float halfZ);  // in y = 0, normal +y
+MeshData makeBox(glm::vec3 halfExtent);
+MeshData makeSphere(float radius, int slices, int stacks);
+MeshData makeTorus(float ringRadius, float tubeRadius, int ringSegments, int tubeSegments);
+MeshData makePyramid(float halfBase, float height);  // base on y = 0, apex up
+
+struct Bounds {
+  glm::vec3 min{1e30f};
+  glm::vec3 max{-1e30f};
+  bool empty() const { return min.x > max.x; }
+  void add(glm::vec3 p) {
+    min = glm::min(min, p);
+    max = glm::max(max, p);
+  }
+  void add(const Bounds& b) {
+    if (!b.empty()) add(b.min), add(b.max);
+  }
+  glm::vec3 center() const { return 0.5f * (min + max); }
+  float radius() const { return empty() ? 0.0f : 0.5f * glm::length(max - min); }
+};
+
+struct SceneObject {
+  std::string name;
+  MeshData mesh;
+  glm::mat4 model{1.0f};
+  glm::vec3 color{0.8f};
+  bool caster = true;    // drawn into shadow maps
+  bool receiver = true;  // shows shadows
+  Bounds worldBounds() const;
+};
+
+struct LightSetup {
+  bool directional = false;
+  glm::vec3 position{0.0f, 5.0f, 0.0f};
+  glm::vec3 target{0.0f};
+  float fov = 60.0f;     // spot: full vertical angle in degrees
+  float extent = 10.0f;  // directional: half width of the orthographic box
+  float near = 1.0f, far = 20.0f;
+};
+
+struct CameraSetup {
+  glm::vec3 position{0.0f, 3.0f, 8.0f};
+  glm::vec3 target{0.0f};
+  float fov = 45.0f;  // vertical, degrees
+  float near = 0.1f, far = 100.0f;
+};
+
+struct Scene {
+  std::string name;
+  std::vector<SceneObject> objects;
+  LightSetup light;
+  CameraSetup camera;
+  Bounds bounds(bool castersOnly = false) const;
+  // All triangles in world space, in object order (the truth's input).
+  void worldTriangles(std::vector<glm::vec3>& positions, std::vector<glm::uvec3>& triangles) const;
+};
+
+const std::vector<std::string>& scenePresets();
+Scene makeScene(const std::string& preset);  // throws std::invalid_argument for unknown names
+
+}  // namespace shadows

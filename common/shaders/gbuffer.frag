@@ -1,0 +1,19 @@
+#version 330 core
+in vec3 vWorld;
+uniform int uObject;
+uniform mat4 uLightViewProjection;  // pixels outside this frustum are not counted
+uniform int uHasLightFrustum;
+layout(location = 0) out vec4 outPosition;  // xyz world, w object (or -1: not counted)
+layout(location = 1) out vec4 outNormal;
+void main() {
+  // The geometric normal of the triangle, not the interpolated one: truth rays leave the
+  // true surface.
+  vec3 n = normalize(cross(dFdx(vWorld), dFdy(vWorld)));
+  float object = float(uObject);
+  if (uHasLightFrustum == 1) {
+    vec4 c = uLightViewProjection * vec4(vWorld, 1.0);
+    if (c.w <= 0.0 || any(greaterThan(abs(c.xy), vec2(c.w)))) object = -1.0;
+  }
+  outPosition = vec4(vWorld, object);
+  outNormal = vec4(n, 0.0);
+}

@@ -1,0 +1,41 @@
+// The matrices of the seeds, in pure GLM (no GL), so they can be unit-tested.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "scene.hpp"
+
+namespace shadows {
+
+// B: clip space [-1,1] to texture space [0,1] (scale by 1/2, translate by 1/2).
+glm::mat4 biasMatrix();
+
+// A view matrix looking from `eye` to `target` that never degenerates: when the direction
+// is parallel to +y it picks another up vector, and eye == target looks down -y.
+glm::mat4 lookAtSafe(glm::vec3 eye, glm::vec3 target);
+
+struct LightFrustum {
+  bool directional = false;
+  float fov = 60.0f;     // spot: vertical angle, degrees
+  float extent = 10.0f;  // directional: half width of the box
+  float aspect = 1.0f;   // shadow map width / height
+  float near = 1.0f, far = 20.0f;
+};
+// P_light: perspective for a spot light, orthographic for a directional one. Near/far are
+// sanitized (near > 0 for spots, far > near) so no slider position makes it singular.
+glm::mat4 lightProjection(const LightFrustum& frustum);
+
+// The texture matrix of seeds 000/004: B * P_light * V_light (times M in the shader).
+glm::mat4 shadowTextureMatrix(const glm::mat4& lightProjection, const glm::mat4& lightView);
+
+// Near/far along the light's view axis that just enclose `bounds` (e.g. the casters),
+// with a small margin. For a spot light, near stays positive. Returns false (and leaves
+// near/far alone) when the bounds are empty or lie entirely behind the light.
+bool fitNearFar(const glm::mat4& lightView, const Bounds& bounds, bool directional, float& near,
+                float& far);
+
+// True when the sphere lies completely outside the frustum of `viewProjection` (so a pass
+// with that frustum can skip it).
+bool sphereOutsideFrustum(const glm::mat4& viewProjection, glm::vec3 center, float radius);
+
+}  // namespace shadows
