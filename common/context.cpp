@@ -1,12 +1,13 @@
 #include "context.hpp"
 
+// glad's header must come before any system GL header.
+#include "gl.hpp"
+
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <GL/osmesa.h>
 
 #include <vector>
-
-#include "gl.hpp"
 
 namespace shadows {
 
