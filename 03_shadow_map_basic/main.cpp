@@ -11,6 +11,7 @@
 #include <cstdio>
 
 #include "app.hpp"
+#include "json.hpp"
 
 namespace shadows {
 
@@ -119,6 +120,11 @@ class ShadowMapBasic final : public Lesson {
     if (p.at("inset").b() && mode != "visibility") {
       f.drawDepthInset(shadow_map_, near_, far_, !frustum.directional);
     }
+  }
+
+  void report(JsonWriter& json) const override {
+    json.value("light_near_used", near_);
+    json.value("light_far_used", far_);
   }
 
   void panel(Frame& f) override {

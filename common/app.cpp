@@ -610,15 +610,22 @@ void Runner::drawPanel(Frame& frame) {
   ImGui::TextDisabled("%s", lesson_->seeds().c_str());
   ImGui::Separator();
   ImGui::Text("frame %.2f ms", measure_->lastFrameMs());
-  const auto pass_ms = measure_->medianPassMs();
-  for (const auto& [pass, work] : measure_->lastFrameWork()) {
-    const auto it = pass_ms.find(pass);
-    ImGui::Text("  %-8s %7.2f ms %3lld draws %9lld fragments", pass.c_str(),
-                it == pass_ms.end() ? 0.0 : it->second, work.draw_calls, work.fragment_invocations);
+  // One line per pass ever run and one line of counters, so widgets never jump around.
+  const auto& work = measure_->lastFrameWork();
+  for (const auto& [pass, ms] : measure_->medianPassMs()) {
+    const auto it = work.find(pass);
+    if (it == work.end()) {
+      ImGui::Text("  %-8s skipped this frame", pass.c_str());
+    } else {
+      ImGui::Text("  %-8s %7.2f ms %3lld draws %9lld fragments", pass.c_str(), ms,
+                  it->second.draw_calls, it->second.fragment_invocations);
+    }
   }
+  std::string counts;
   for (const auto& [name, count] : measure_->lastFrameCounts()) {
-    ImGui::Text("  %s: %lld", name.c_str(), count);
+    counts += (counts.empty() ? "  " : ", ") + name + " " + std::to_string(count);
   }
+  ImGui::TextUnformatted(counts.c_str());
   if (options_.truth) {
     if (error_.valid) {
       const ErrorMetrics& e = error_.metrics;
@@ -662,6 +669,7 @@ void Runner::writeReport(JsonWriter& json) {
   for (const auto& [name, count] : measure_->lastFrameCounts()) json.value(name, count);
   json.endObject();
   json.value("gl_errors", glErrors());
+  lesson_->report(json);
   if (error_.valid) {
     const ErrorMetrics& e = error_.metrics;
     json.beginObject("error");

@@ -77,6 +77,7 @@ class Lesson {
   virtual void init() = 0;                   // GL resources (context is current)
   virtual void render(Frame& frame) = 0;     // draw frame.mode into frame.target
   virtual void panel(Frame&) {}              // extra ImGui lines under the sliders
+  virtual void report(JsonWriter&) const {}  // extra report fields (what the lesson derived)
   // A path next to the lesson's main.cpp, fixed at build time (never the working directory).
   static std::filesystem::path lessonFile(const std::string& lessonDir, const std::string& file) {
     return std::filesystem::path(lessonDir) / file;

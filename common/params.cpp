@@ -68,6 +68,12 @@ std::string allowed(const Param& p) {
   return {};
 }
 
+// Ranges are declared as floats: compare in float so "0.001" is inside [0.001f, ...].
+bool inRange(const Param& p, double v) {
+  const auto f = static_cast<float>(v);
+  return f >= static_cast<float>(p.min) && f <= static_cast<float>(p.max);
+}
+
 }  // namespace
 
 std::string Param::text() const {
@@ -162,7 +168,7 @@ std::string Params::set(const std::string& name, const std::string& text) {
     case ParamKind::Int:
       if (!parseNumber(text, parsed[0])) return bad;
       if (p->kind == ParamKind::Int && parsed[0] != std::floor(parsed[0])) return bad;
-      if (parsed[0] < p->min || parsed[0] > p->max) return bad;
+      if (!inRange(*p, parsed[0])) return bad;
       break;
     case ParamKind::Bool:
       if (text == "true" || text == "1" || text == "on") {
@@ -179,7 +185,7 @@ std::string Params::set(const std::string& name, const std::string& text) {
       int n = 0;
       while (std::getline(in, part, ',')) {
         if (n == 3 || !parseNumber(part, parsed[n])) return bad;
-        if (parsed[n] < p->min || parsed[n] > p->max) return bad;
+        if (!inRange(*p, parsed[n])) return bad;
         ++n;
       }
       if (n != 3 || text.back() == ',') return bad;
@@ -306,6 +312,9 @@ bool Params::drawWidgets(const std::string& prefix) {
         break;
       }
     }
+    p.widget_min = {ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y};
+    // The frame only, not the label drawn to its right.
+    p.widget_max = {ImGui::GetItemRectMin().x + ImGui::CalcItemWidth(), ImGui::GetItemRectMax().y};
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", p.help.c_str());
     any = any || changed_now;
   }

@@ -35,6 +35,9 @@ struct Param {
   bool logarithmic = false;
   std::vector<std::string> choices;
   std::uint32_t affects = kDirtyView;
+  // Where the panel drew its widget last frame (ImGui screen coordinates, y down), so a test
+  // or a tutorial script can aim the mouse at it.
+  glm::vec2 widget_min{0.0f}, widget_max{0.0f};
 
   float f() const { return static_cast<float>(value[0]); }
   int i() const { return static_cast<int>(value[0]); }

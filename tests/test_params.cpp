@@ -1,3 +1,112 @@
+// Parameters: declared once, set from text with one-line errors that say what is allowed.
+#include "params.hpp"
+
+#include "json.hpp"
+
 #include <gtest/gtest.h>
 
-#include "params.hpp"
+namespace shadows {
+namespace {
+
+class ParamsTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    params.addInt("shadow.size", 1024, 64, 4096, "map size", kDirtyShadowMap);
+    params.addFloat("dimming", 0.4f, 0, 1, "dimming");
+    params.addBool("inset", true, "inset");
+    params.addVec3("light.pos", {1, 2, 3}, -50, 50, "light", kDirtyShadowMap);
+    params.addChoice("shadow.format", {"16", "24", "32f"}, "24", "bits", kDirtyResources);
+    params.consume(kDirtyAll);
+  }
+  Params params;
+};
+
+TEST_F(ParamsTest, GoodValuesAreApplied) {
+  EXPECT_EQ(params.set("shadow.size", "2048"), "");
+  EXPECT_EQ(params.at("shadow.size").i(), 2048);
+  EXPECT_EQ(params.set("dimming", "0.25"), "");
+  EXPECT_FLOAT_EQ(params.at("dimming").f(), 0.25f);
+  EXPECT_EQ(params.set("inset", "false"), "");
+  EXPECT_FALSE(params.at("inset").b());
+  EXPECT_EQ(params.assign("light.pos=-1.5,0,2e1"), "");
+  EXPECT_EQ(params.at("light.pos").v(), glm::vec3(-1.5f, 0, 20));
+  EXPECT_EQ(params.set("shadow.format", "32f"), "");
+  EXPECT_TRUE(params.at("shadow.format").is("32f"));
+}
+
+TEST_F(ParamsTest, BadValuesNameTheParameterAndWhatIsAllowedAndChangeNothing) {
+  struct Case {
+    const char* name;
+    const char* value;
+    const char* must_mention;
+  };
+  const Case cases[] = {
+      {"shadow.size", "99999", "[64, 4096]"}, {"shadow.size", "63", "[64, 4096]"},
+      {"shadow.size", "1024.5", "integer"},   {"shadow.size", "abc", "integer"},
+      {"shadow.size", "", "integer"},         {"dimming", "nan", "[0, 1]"},
+      {"dimming", "inf", "[0, 1]"},           {"dimming", "1.5", "[0, 1]"},
+      {"dimming", "0.5x", "[0, 1]"},          {"inset", "maybe", "true or false"},
+      {"light.pos", "1,2", "x,y,z"},          {"light.pos", "1,2,3,4", "x,y,z"},
+      {"light.pos", "1,2,", "x,y,z"},         {"light.pos", "1,,3", "x,y,z"},
+      {"light.pos", "1,2,99", "[-50, 50]"},   {"shadow.format", "8", "16, 24, 32f"},
+      {"shadow.format", "24 ", "16, 24, 32f"}};
+  for (const Case& c : cases) {
+    const std::string error = params.set(c.name, c.value);
+    EXPECT_NE(error.find(c.name), std::string::npos) << c.name << "=" << c.value;
+    EXPECT_NE(error.find(c.must_mention), std::string::npos) << error;
+    EXPECT_EQ(error.find('\n'), std::string::npos) << "one line: " << error;
+  }
+  EXPECT_EQ(params.at("shadow.size").i(), 1024);
+  EXPECT_FLOAT_EQ(params.at("dimming").f(), 0.4f);
+  EXPECT_EQ(params.at("light.pos").v(), glm::vec3(1, 2, 3));
+  EXPECT_EQ(params.dirty(), 0u) << "a failed set must not mark anything dirty";
+}
+
+TEST_F(ParamsTest, UnknownNamesAndMalformedAssignmentsAreRejected) {
+  const std::string error = params.set("shadow.sise", "1");
+  EXPECT_NE(error.find("unknown parameter 'shadow.sise'"), std::string::npos);
+  EXPECT_NE(error.find("shadow.size"), std::string::npos) << "lists what exists";
+  EXPECT_NE(params.assign("novalue"), "");
+  EXPECT_NE(params.assign("=3"), "");
+}
+
+TEST_F(ParamsTest, ChangesMarkOnlyWhatDependsOnThem) {
+  EXPECT_EQ(params.set("dimming", "0.1"), "");
+  EXPECT_FALSE(params.consume(kDirtyShadowMap)) << "dimming does not touch the shadow map";
+  EXPECT_EQ(params.set("light.pos", "0,5,0"), "");
+  EXPECT_TRUE(params.consume(kDirtyShadowMap));
+  EXPECT_FALSE(params.consume(kDirtyShadowMap)) << "consumed once";
+  EXPECT_EQ(params.set("light.pos", "0,5,0"), "");
+  EXPECT_FALSE(params.consume(kDirtyShadowMap)) << "setting the same value is not a change";
+  EXPECT_EQ(params.set("shadow.format", "16"), "");
+  EXPECT_TRUE(params.consume(kDirtyResources));
+}
+
+TEST_F(ParamsTest, ProgrammaticSetsClampToTheRange) {
+  params.setFloat(params.at("shadow.size"), 1e9);
+  EXPECT_EQ(params.at("shadow.size").i(), 4096);
+  params.setVec3(params.at("light.pos"), {-100, 0, 100});
+  EXPECT_EQ(params.at("light.pos").v(), glm::vec3(-50, 0, 50));
+}
+
+TEST_F(ParamsTest, ListAndReportCarryEveryParameter) {
+  const std::string list = params.listText();
+  JsonWriter json;
+  json.beginObject();
+  params.writeJson(json);
+  json.endObject();
+  for (const auto& p : params.all()) {
+    EXPECT_NE(list.find(p.name), std::string::npos) << p.name;
+    EXPECT_NE(json.str().find("\"" + p.name + "\""), std::string::npos) << p.name;
+  }
+  EXPECT_NE(list.find("[64, 4096]"), std::string::npos);
+  EXPECT_NE(list.find("16, 24, 32f"), std::string::npos);
+  EXPECT_NE(list.find("map size"), std::string::npos) << "help text is listed";
+}
+
+TEST_F(ParamsTest, DeclaringTwiceIsAProgrammingError) {
+  EXPECT_THROW(params.addBool("inset", false, "again"), std::logic_error);
+}
+
+}  // namespace
+}  // namespace shadows

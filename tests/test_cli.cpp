@@ -1,0 +1,111 @@
+// The command-line contract of every lesson binary: bad input is exit 2, one line that
+// names what is wrong, and no file left behind.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+Result run(const std::string& lesson, const std::string& args) {
+  const std::string command = std::string(SHADOWS_BINARY_DIR) + "/" + lesson + " " + args + " 2>&1";
+  Result result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  std::array<char, 4096> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) result.output += buffer.data();
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+class Cli : public ::testing::TestWithParam<const char*> {
+ protected:
+  void SetUp() override {
+    dir = fs::temp_directory_path() /
+          ("shadows_cli_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+           "_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  bool dirIsEmpty() const { return fs::is_empty(dir); }
+  fs::path dir;
+};
+
+const std::string kLesson = "03_shadow_map_basic";
+
+TEST_F(Cli, HeadlessRunWritesPictureAndReportWithTimingsCountersAndError) {
+  const auto out = (dir / "x.png").string(), report = (dir / "r.json").string();
+  const Result r = run(kLesson,
+                       "--headless --size 320x240 --frames 2 --set shadow.size=2048"
+                       " --set view=compare --out " +
+                           out + " --report " + report);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  ASSERT_TRUE(fs::exists(out));
+  std::ifstream in(report);
+  std::stringstream json;
+  json << in.rdbuf();
+  for (const char* key :
+       {"\"frame_ms\"", "\"pass_ms\"", "\"eye\"", "\"counters\"", "\"fragment_invocations\"",
+        "\"shadow_map_renders\"", "\"gl_errors\": 0", "\"false_shadow_pct\"",
+        "\"truth\": \"point\"", "\"shadow.size\": 2048", "\"view\": \"compare\""}) {
+    EXPECT_NE(json.str().find(key), std::string::npos) << key << "\n" << json.str();
+  }
+  EXPECT_FALSE(fs::exists(out + ".partial"));
+}
+
+TEST_F(Cli, ListParamsListsEverySlider) {
+  const Result r = run(kLesson, "--list-params");
+  ASSERT_EQ(r.exit_code, 0);
+  for (const char* name :
+       {"scene", "view", "shadow.size", "shadow.height", "shadow.format", "shadow.filter",
+        "shadow.fit", "shadow.cache", "dimming", "inset", "light.type", "light.pos", "light.target",
+        "light.fov", "light.near", "light.far", "camera.pos", "camera.target"}) {
+    EXPECT_NE(("\n" + r.output).find(std::string("\n") + name + " "), std::string::npos) << name;
+  }
+}
+
+TEST_F(Cli, HelpExitsZero) {
+  const Result r = run(kLesson, "--help");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.output.find("--set name=value"), std::string::npos);
+}
+
+TEST_P(Cli, BadInputExitsTwoWithOneLineAndWritesNothing) {
+  const std::string out = (dir / "x.png").string(), report = (dir / "r.json").string();
+  const std::string args = std::string("--headless --size 64x48 ") + GetParam() + " --out " + out +
+                           " --report " + report;
+  const Result r = run(kLesson, args);
+  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
+  EXPECT_TRUE(dirIsEmpty()) << args;
+  // One line, naming the lesson and what was wrong.
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_EQ(r.output.rfind(kLesson + ": ", 0), 0u) << r.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryKind, Cli,
+    ::testing::Values("--bogus", "--set shadow.sise=512", "--set shadow.size=abc",
+                      "--set shadow.size=99999", "--set shadow.size=", "--set light.pos=1,2",
+                      "--set light.pos=1,2,x", "--set shadow.format=8", "--set view=nope",
+                      "--set scene=moon", "--set dimming=nan", "--set inset=maybe",
+                      "--set noequals", "--set", "--size 0x10", "--size 640", "--size axb",
+                      "--frames 0", "--frames -3", "--backend vulkan",
+                      "--out /nonexistent/dir/x.png", "--report /nonexistent/r.json",
+                      "--error-out /proc/none/e.png", "--truth-out"));
+
+}  // namespace
