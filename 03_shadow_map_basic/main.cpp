@@ -12,6 +12,7 @@
 
 #include "app.hpp"
 #include "json.hpp"
+#include "shadow_map.hpp"
 
 namespace shadows {
 
@@ -27,18 +28,8 @@ class ShadowMapBasic final : public Lesson {
   }
 
   void declare(Params& p) override {
-    constexpr auto kMap = kDirtyShadowMap | kDirtyResources;
-    p.addInt("shadow.size", 1024, 64, 4096, "shadow map width in texels", kMap).logarithmic = true;
-    p.addInt("shadow.height", 0, 0, 4096, "shadow map height (0 = square)", kMap);
-    p.addChoice("shadow.format", {"16", "24", "32f"}, "24", "depth bits of the map", kMap);
-    p.addChoice("shadow.filter", {"nearest", "linear"}, "nearest",
-                "linear = the hardware 2x2 compare filter (shadows are not averaged depths)");
-    p.addBool("shadow.fit", false, "fit the light's near/far to the casters' bounds",
-              kDirtyShadowMap);
-    p.addBool("shadow.cache", true, "re-render the map only when the light or a caster changed",
-              kDirtyShadowMap);
+    ShadowMap::declare(p);  // shadow.size/height/format/filter/fit/cache, inset
     p.addFloat("dimming", 0.4f, 0.0f, 1.0f, "light left in shadow: dimming + (1-dimming)*shade");
-    p.addBool("inset", true, "show the depth map in a corner");
   }
 
   void init() override {
@@ -59,90 +50,59 @@ class ShadowMapBasic final : public Lesson {
   }
 
   void render(Frame& f) override {
-    Params& p = f.params;
-    const int width = p.at("shadow.size").i();
-    const int height = p.at("shadow.height").i() > 0 ? p.at("shadow.height").i() : width;
-    if (p.consume(kDirtyResources) || !shadow_map_.id()) createShadowMap(f, width, height);
-
-    // The light's frustum; optionally fitted to the casters so no depth range is wasted.
-    LightFrustum frustum = f.light.frustum(static_cast<float>(width) / static_cast<float>(height));
-    if (p.at("shadow.fit").b()) {
-      fitNearFar(f.light.view, f.scene.bounds(/*castersOnly=*/true), frustum.directional,
-                 frustum.near, frustum.far);
-    }
-    near_ = frustum.near, far_ = frustum.far;
-    const glm::mat4 light_projection = lightProjection(frustum);
-    const glm::mat4 light_view_projection = light_projection * f.light.view;
-    f.light_view_projection = light_view_projection;
-
-    // Pass 1, only when something it depends on changed (a static frame renders no map).
-    const bool map_stale = p.consume(kDirtyShadowMap) || !p.at("shadow.cache").b();
-    f.measure.count("shadow_map_renders", map_stale ? 1 : 0);
-    if (map_stale) {
+    // Pass 1: depth from the light, only when something it depends on changed (a static
+    // frame renders no map). Only casters inside the light frustum are drawn into it.
+    if (map_.prepare(f)) {
       auto timing = f.measure.pass("shadow");
-      shadow_fbo_->bind();
-      glViewport(0, 0, width, height);
-      glClear(GL_DEPTH_BUFFER_BIT);
+      map_.beginRender();
+      const glm::mat4 light_view_projection = map_.lightViewProjection();  // P_light * V_light
       depth_program_.set("uLightViewProjection", light_view_projection);
-      // Only casters, and only those inside the light frustum, go into the map.
       f.drawObjects(depth_program_, Objects::Casters, &light_view_projection);
     }
-
-    // Pass 2 from the eye (or, for the first of Kilgard's views, from the light).
-    const std::string& mode = f.mode;
-    if (mode == "light_depth") {
+    if (f.mode == "light_depth") {  // Kilgard's second view: the depth map itself
       f.bindTarget();
       glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      f.drawDepthInset(shadow_map_, near_, far_, !frustum.directional, /*fullscreen=*/true);
+      map_.drawInset(f, /*fullscreen=*/true);
       return;
     }
+
+    // Pass 2 from the eye (or, for Kilgard's first view, from the light): each fragment
+    // gets (s, t, r, q) = B * P_light * V_light * M * p and textureProj compares r/q.
     auto timing = f.measure.pass("eye");
     f.bindTarget();
     glClearColor(0.55f, 0.62f, 0.72f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    shadow_map_.setFilter(p.at("shadow.filter").is("linear") ? GL_LINEAR : GL_NEAREST);
-    shadow_map_.bind(0);
-    shadow_map_.bind(1);
+    map_.texture().bind(0);  // as sampler2DShadow
+    map_.texture().bind(1);  // the same texture through raw_sampler_, for the debug views
     glBindSampler(1, raw_sampler_);
-    const bool from_light = mode == "light_view";
-    eye_program_.set("uViewProjection", from_light ? light_view_projection : f.projection * f.view);
-    eye_program_.set("uShadowMatrix", shadowTextureMatrix(light_projection, f.light.view));
+    const bool from_light = f.mode == "light_view";
+    eye_program_.set("uViewProjection",
+                     from_light ? map_.lightViewProjection() : f.projection * f.view);
+    eye_program_.set("uShadowMatrix", biasMatrix() * map_.lightProjection() * map_.lightView());
     eye_program_.set("uShadowMap", 0);
     eye_program_.set("uShadowDepth", 1);
-    eye_program_.set("uMode", modeIndex(mode));
-    eye_program_.set("uLightNear", near_);
-    eye_program_.set("uLightFar", far_);
-    eye_program_.set("uLightPerspective", frustum.directional ? 0 : 1);
-    f.setLightingUniforms(eye_program_, p.at("dimming").f());
+    eye_program_.set("uMode", modeIndex(f.mode));
+    eye_program_.set("uLightNear", map_.frustum().near);
+    eye_program_.set("uLightFar", map_.frustum().far);
+    eye_program_.set("uLightPerspective", map_.frustum().directional ? 0 : 1);
+    f.setLightingUniforms(eye_program_, f.params.at("dimming").f());
     if (from_light) eye_program_.set("uEye", f.light.position);
     f.drawObjects(eye_program_, Objects::All);
     glBindSampler(1, 0);
-    if (p.at("inset").b() && mode != "visibility") {
-      f.drawDepthInset(shadow_map_, near_, far_, !frustum.directional);
-    }
+    if (f.mode != "visibility") map_.drawInset(f);
   }
 
   void report(JsonWriter& json) const override {
-    json.value("light_near_used", near_);
-    json.value("light_far_used", far_);
+    json.value("light_near_used", map_.frustum().near);
+    json.value("light_far_used", map_.frustum().far);
   }
 
   void panel(Frame& f) override {
-    ImGui::Text("light near %.3f  far %.3f%s", near_, far_,
+    ImGui::Text("light near %.3f  far %.3f%s", map_.frustum().near, map_.frustum().far,
                 f.params.at("shadow.fit").b() ? " (fitted to casters)" : "");
   }
 
  private:
-  void createShadowMap(Frame& f, int width, int height) {
-    const std::string& format = f.params.at("shadow.format").choice();
-    shadow_map_ = Texture::depth(width, height, format == "16" ? 16 : format == "24" ? 24 : 32);
-    shadow_map_.setCompare(true);  // sampler2DShadow: the texture unit does the A/B compare
-    shadow_fbo_ = std::make_unique<Framebuffer>();
-    shadow_fbo_->attachDepth(shadow_map_);
-    shadow_fbo_->check();
-    f.params.markDirty(kDirtyShadowMap);
-  }
-
   static int modeIndex(const std::string& mode) {
     if (mode == "visibility") return 1;
     if (mode == "projected_depth") return 2;
@@ -151,11 +111,9 @@ class ShadowMapBasic final : public Lesson {
     return 0;  // shaded, light_view
   }
 
+  ShadowMap map_;
   Program depth_program_, eye_program_;
-  Texture shadow_map_;
-  std::unique_ptr<Framebuffer> shadow_fbo_;
   GLuint raw_sampler_ = 0;
-  float near_ = 0, far_ = 0;
 };
 
 SHADOWS_LESSON(ShadowMapBasic);
