@@ -445,6 +445,7 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
   } else {
     lesson_->render(frame);
     light_frustum_ = frame.light_view_projection;
+    truth_area_radius_ = frame.truth_area_radius;
   }
   if (withPanel) {
     frame.bindTarget();
@@ -558,11 +559,18 @@ const ErrorState& Runner::measureError() {
   truth_light.position = light.position;
   truth_light.direction = light.direction;
   truth_light.directional = light.directional;
+  truth_light.radius = truth_area_radius_;
+  truth_light.samples = 64;
   const std::vector<float> truth = truth_->visibility(surface, truth_light);
   const std::vector<float> weight = Truth::facingWeight(surface, truth_light);
 
   error_.metrics = compareVisibility(rendered, truth, weight);
   error_.metrics.truth = light.directional ? "directional" : "point";
+  if (truth_area_radius_ > 0.0f) {
+    char name[64];
+    std::snprintf(name, sizeof name, "area r=%g n=%d", truth_area_radius_, truth_light.samples);
+    error_.metrics.truth = name;
+  }
   long long shaded_nonfinite = 0;
   std::vector<std::uint8_t> shaded_bytes(n * 4);
   for (size_t i = 0; i < n; ++i) {

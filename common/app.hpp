@@ -53,6 +53,9 @@ struct Frame {
   // Outputs the runner uses: the light frustum the shadow term is valid in (pixels
   // outside it are not counted against the truth).
   std::optional<glm::mat4> light_view_projection;
+  // The light the truth should use: 0 = a point (hard shadows); a soft-shadow lesson sets
+  // the radius of the area light its filter imitates.
+  float truth_area_radius = 0.0f;
 
   void bindTarget() const;
   // Draws objects with `program`, setting uModel and uColor per object. With `cull`, objects
@@ -179,6 +182,7 @@ class Runner {
   std::string error_key_;
   Image error_image_, truth_image_;
   std::optional<glm::mat4> light_frustum_;
+  float truth_area_radius_ = 0.0f;
   glm::vec2 mouse_{-1.0f};
   bool mouse_down_ = false;
   double last_time_ = 0.0;
