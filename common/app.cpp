@@ -720,6 +720,8 @@ int Runner::runHeadless() {
   initHeadless();
   const std::string out = options_.out.empty() ? name_ + ".png" : options_.out;
   renderFrame();  // warm-up: shader JIT and the first shadow map land here
+  // A snapshot with the panel should show the error numbers, so measure them first.
+  if (options_.panel && options_.truth) measureError();
   measure_->clearHistory();
   for (int i = 0; i < options_.frames; ++i) renderFrame();
   const Image image = readImage();

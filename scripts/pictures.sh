@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Renders the pictures of the lesson READMEs, headless, by the lessons themselves.
+# Each lesson lists them in NN_name/pictures.txt, one per line:
+#   file.png  --set name=value ...       (any lesson flags; '#' starts a comment)
+# and gets NN_name/pictures/file.png plus NN_name/pictures/numbers.md, a table of the
+# error and timing of every picture (the numbers the README quotes).
+# Usage: scripts/pictures.sh [lesson-prefix ...]   (default: every lesson)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${BUILD_DIR:-build}
+size=${PICTURE_SIZE:-480x360}
+selected=("$@")
+for list in [0-9][0-9]_*/pictures.txt; do
+  lesson=$(dirname "$list")
+  if ((${#selected[@]})); then
+    match=0
+    for s in "${selected[@]}"; do [[ $lesson == "$s"* ]] && match=1; done
+    ((match)) || continue
+  fi
+  mkdir -p "$lesson/pictures"
+  table="$lesson/pictures/numbers.md"
+  {
+    echo "| picture | settings | false shadow % | false lit % | vis_mae | frame ms |"
+    echo "|---|---|---|---|---|---|"
+  } >"$table"
+  while read -r file flags; do
+    [[ -z $file || $file == \#* ]] && continue
+    report=$(mktemp)
+    # shellcheck disable=SC2086  # flags are a list of words on purpose
+    "$build/$lesson" --headless --size "$size" --frames 3 --out "$lesson/pictures/$file" \
+      --report "$report" $flags
+    num() { grep -o "\"$1\": [-0-9.e+]*" "$report" | head -1 | awk '{printf "%.3g", $2}'; }
+    echo "| $file | \`${flags:-defaults}\` | $(num false_shadow_pct) | $(num false_lit_pct) |" \
+      "$(num vis_mae) | $(num frame_ms) |" >>"$table"
+    rm -f "$report"
+  done <"$list"
+  echo "pictures.sh: $lesson: $(grep -c '\.png' "$table") pictures, numbers in $table"
+done
