@@ -53,10 +53,11 @@ const char* kUsage =
     "usage: %s [options]\n"
     "  (no option)          a window with the ImGui panel if a display exists, else headless\n"
     "  --headless           render without a display (OSMesa) and write --out\n"
+    "  --window             a window even when DISPLAY is unset (fails without a display)\n"
     "  --backend NAME       headless context: osmesa (default) or egl (surfaceless)\n"
     "  --size WxH           image size (default 800x600)\n"
     "  --frames N           timed frames after one warm-up frame (default 5)\n"
-    "  --out FILE.png       write the final frame\n"
+    "  --out FILE.png       write the final frame (in a window: --frames frames, then exit)\n"
     "  --panel              draw the ImGui panel into the headless picture too\n"
     "  --set name=value     set a parameter (repeatable); see --list-params\n"
     "  --list-params        list every parameter: name, type, default, range, help\n"
@@ -693,12 +694,13 @@ void Runner::writeReport(JsonWriter& json) {
   json.endObject();
 }
 
-void Runner::saveScreenshot(int width, int height) {
+void Runner::saveScreenshot(int width, int height, const std::string& file) {
   Image image{width, height, std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 4)};
   glBindFramebuffer(GL_FRAMEBUFFER, window_ ? 0 : gpu_->target->id());
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-  const std::string path = name_ + "_screenshot_" + std::to_string(++screenshots_taken_) + ".png";
+  const std::string path =
+      file.empty() ? name_ + "_screenshot_" + std::to_string(++screenshots_taken_) + ".png" : file;
   if (writePng(path, image)) {
     std::printf("screenshot: %s\n", path.c_str());
   } else {
@@ -796,7 +798,10 @@ int Runner::runWindow() {
   bool dragging = false;
   auto changed_at = std::chrono::steady_clock::now();
   std::string last_key;
-  while (!glfwWindowShouldClose(window)) {
+  // With --out, a windowed run renders --frames frames, saves the window and exits: that is
+  // how the tests check the real window path under xvfb.
+  int frames_left = options_.out.empty() ? -1 : options_.frames + 1;
+  while (!glfwWindowShouldClose(window) && frames_left != 0) {
     glfwPollEvents();
     const ImGuiIO& io = ImGui::GetIO();
     // Orbit the eye around its target with the left mouse button, zoom with the wheel.
@@ -846,14 +851,15 @@ int Runner::runWindow() {
       GlErrorLog::poll();
       if (screenshot_requested_) {
         screenshot_requested_ = false;
-        saveScreenshot(w, h);
+        saveScreenshot(w, h, {});
       }
+      if (frames_left > 0 && --frames_left == 0) saveScreenshot(w, h, options_.out);
     }
     glfwSwapBuffers(window);
   }
   gpu_.reset();
   glfwDestroyWindow(window);
-  return 0;
+  return GlErrorLog::count() > 0 ? 1 : 0;
 }
 
 int runLessonMain(int argc, char** argv) {

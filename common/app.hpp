@@ -162,7 +162,7 @@ class Runner {
   void loadScene();
   Light currentLight() const;
   std::string errorKey() const;
-  void saveScreenshot(int width, int height);
+  void saveScreenshot(int width, int height, const std::string& file);
   void renderInto(GLuint target, int width, int height, const std::string& mode, bool timed,
                   bool withPanel);
   void drawPanel(Frame& frame);
