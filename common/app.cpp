@@ -337,7 +337,7 @@ std::string Runner::applySets(const std::vector<std::string>& sets) {
 }
 
 Light Runner::currentLight() const {
-  auto& p = const_cast<Params&>(params_);
+  const Params& p = params_;
   Light l;
   l.directional = p.at("light.type").is("directional");
   l.position = p.at("light.pos").v();
@@ -355,6 +355,16 @@ Light Runner::currentLight() const {
 void Runner::initHeadless() {
   gpu_ = std::make_unique<Gpu>();
   gpu_->context = createHeadlessContext(options_.backend);
+  initGl();
+  if (options_.panel) {
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+    gpu_->imgui = true;
+  }
+}
+
+void Runner::initGl() {
   GlErrorLog::install();
   GlErrorLog::reset();
   measure_ = std::make_unique<Measure>();
@@ -366,12 +376,6 @@ void Runner::initHeadless() {
   for (const auto& object : scene_.objects) gpu_->meshes.emplace_back(object.mesh);
   gpu_->ensureTargets(options_.width, options_.height);
   lesson_->init();
-  if (options_.panel) {
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;
-    ImGui_ImplOpenGL3_Init("#version 330 core");
-    gpu_->imgui = true;
-  }
 }
 
 void Runner::setMouse(glm::vec2 position, bool leftDown) {
@@ -778,16 +782,7 @@ int Runner::runWindow() {
   if (gladLoadGL(glfwGetProcAddress) == 0) throw GlFailure("glad could not load GL");
   gpu_ = std::make_unique<Gpu>();
   gpu_->window = window;
-  GlErrorLog::install();
-  measure_ = std::make_unique<Measure>();
-  const auto dir = commonShaderDir();
-  gpu_->gbuffer = Program(dir / "gbuffer.vert", dir / "gbuffer.frag");
-  gpu_->image = Program(dir / "fullscreen.vert", dir / "image.frag");
-  gpu_->depth_inset = Program(dir / "fullscreen.vert", dir / "depth_inset.frag");
-  glGenVertexArrays(1, &gpu_->empty_vao);
-  for (const auto& object : scene_.objects) gpu_->meshes.emplace_back(object.mesh);
-  gpu_->ensureTargets(options_.width, options_.height);
-  lesson_->init();
+  initGl();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
   ImGui_ImplGlfw_InitForOpenGL(window, true);

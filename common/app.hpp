@@ -159,6 +159,7 @@ class Runner {
  private:
   struct Gpu;
   void declareShared();
+  void initGl();  // the runner's GL resources and the lesson's, once a context is current
   void loadScene();
   Light currentLight() const;
   std::string errorKey() const;

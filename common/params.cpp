@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "json.hpp"
 
@@ -143,14 +144,22 @@ Param& Params::addChoice(const std::string& name, const std::vector<std::string>
 }
 
 Param* Params::find(const std::string& name) {
-  for (auto& p : params_) {
+  return const_cast<Param*>(std::as_const(*this).find(name));
+}
+
+const Param* Params::find(const std::string& name) const {
+  for (const auto& p : params_) {
     if (p.name == name) return &p;
   }
   return nullptr;
 }
 
 Param& Params::at(const std::string& name) {
-  if (Param* p = find(name)) return *p;
+  return const_cast<Param&>(std::as_const(*this).at(name));
+}
+
+const Param& Params::at(const std::string& name) const {
+  if (const Param* p = find(name)) return *p;
   throw std::out_of_range("no parameter named " + name);
 }
 

@@ -66,7 +66,9 @@ class Params {
                    std::uint32_t affects = kDirtyView);
 
   Param* find(const std::string& name);
+  const Param* find(const std::string& name) const;
   Param& at(const std::string& name);  // throws std::out_of_range naming the parameter
+  const Param& at(const std::string& name) const;
   const std::deque<Param>& all() const { return params_; }
 
   // Parses and applies `value`; returns "" on success, else one line naming the parameter
