@@ -211,6 +211,11 @@ void Frame::drawDepthInset(const Texture& depth, float near, float far, bool per
   runner.drawInset(*this, depth, near, far, perspective, fullscreen);
 }
 
+void Frame::drawObject(const Program& program, size_t index) const {
+  program.use();
+  runner.drawObject(program, index);
+}
+
 void Runner::drawObjects(const Frame& frame, const Program& program, Objects which,
                          const glm::mat4* cull) const {
   program.use();
@@ -225,12 +230,25 @@ void Runner::drawObjects(const Frame& frame, const Program& program, Objects whi
         continue;
       }
     }
-    program.set("uModel", object.model);
-    program.set("uNormalMatrix", glm::transpose(glm::inverse(object.model)));
-    program.set("uColor", object.color);
-    program.set("uObject", static_cast<int>(i));
-    gpu_->meshes[i].draw();
+    drawObject(program, i);
   }
+}
+
+void Runner::drawObject(const Program& program, size_t index) const {
+  const SceneObject& object = scene_.objects.at(index);
+  program.set("uModel", object.model);
+  program.set("uNormalMatrix", glm::transpose(glm::inverse(object.model)));
+  program.set("uColor", object.color);
+  program.set("uObject", static_cast<int>(index));
+  gpu_->meshes[index].draw();
+}
+
+void Runner::setObjectModel(size_t index, const glm::mat4& model) {
+  SceneObject& object = scene_.objects.at(index);
+  if (object.model == model) return;
+  object.model = model;
+  truth_.reset();  // the truth's triangles are in world space
+  error_.valid = false;
 }
 
 void Runner::drawInset(const Frame& frame, const Texture& depth, float near, float far,

@@ -61,6 +61,8 @@ struct Frame {
   // Draws objects with `program`, setting uModel and uColor per object. With `cull`, objects
   // whose bounds lie outside that view-projection are skipped and counted as culled.
   void drawObjects(const Program& program, Objects which, const glm::mat4* cull = nullptr) const;
+  // Draws the one scene object with this index, with the same per-object uniforms.
+  void drawObject(const Program& program, size_t index) const;
   // Light position/direction, eye and dimming uniforms of common/shaders/lighting.glsl.
   void setLightingUniforms(const Program& program, float dimming) const;
   // A depth texture in a corner of the target, or over all of it (linearized for a
@@ -135,6 +137,8 @@ class Runner {
   void setMouse(glm::vec2 position, bool leftDown);
   // Computes visibility, truth and metrics for the current parameters.
   const ErrorState& measureError();
+  // The last error measured (may be stale while sliders move): lessons name it in their panel.
+  const ErrorState& lastError() const { return error_; }
   Image readImage() const;
   std::vector<float> renderVisibility();
 
@@ -153,6 +157,11 @@ class Runner {
   // For Frame helpers.
   void drawObjects(const Frame& frame, const Program& program, Objects which,
                    const glm::mat4* cull) const;
+  void drawObject(const Program& program, size_t index) const;
+  // Moves one scene object (lesson 01 tilts its receiver plane). Everything follows it: the
+  // lesson's draws, the runner's geometry pass and the ray-traced truth, which is rebuilt
+  // when the matrix really changed. A scene preset change puts the preset's matrix back.
+  void setObjectModel(size_t index, const glm::mat4& model);
   void drawInset(const Frame& frame, const Texture& depth, float near, float far, bool perspective,
                  bool fullscreen) const;
 

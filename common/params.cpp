@@ -1,6 +1,7 @@
 #include "params.hpp"
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -49,6 +50,8 @@ const char* kindName(ParamKind kind) {
       return "vec3";
     case ParamKind::Choice:
       return "choice";
+    case ParamKind::String:
+      return "string";
   }
   return "?";
 }
@@ -65,6 +68,8 @@ std::string allowed(const Param& p) {
       return "x,y,z with each in [" + number(p.min) + ", " + number(p.max) + "]";
     case ParamKind::Choice:
       return "one of " + joined(p.choices);
+    case ParamKind::String:
+      return "any text";
   }
   return {};
 }
@@ -88,6 +93,8 @@ std::string Param::text() const {
       return number(value[0]) + "," + number(value[1]) + "," + number(value[2]);
     case ParamKind::Choice:
       return choice();
+    case ParamKind::String:
+      return string_value;
   }
   return {};
 }
@@ -95,6 +102,7 @@ std::string Param::text() const {
 Param& Params::add(Param p) {
   if (find(p.name) != nullptr) throw std::logic_error("parameter declared twice: " + p.name);
   std::copy(std::begin(p.value), std::end(p.value), std::begin(p.fallback));
+  p.string_fallback = p.string_value;
   params_.push_back(std::move(p));
   dirty_ |= params_.back().affects;
   return params_.back();
@@ -140,6 +148,14 @@ Param& Params::addChoice(const std::string& name, const std::vector<std::string>
   const auto it = std::find(choices.begin(), choices.end(), def);
   if (it == choices.end()) throw std::logic_error(name + ": default is not a choice");
   p.value[0] = static_cast<double>(it - choices.begin());
+  return add(std::move(p));
+}
+
+Param& Params::addString(const std::string& name, const std::string& def, const std::string& help,
+                         std::uint32_t affects) {
+  Param p;
+  p.name = name, p.help = help, p.kind = ParamKind::String, p.string_value = def;
+  p.affects = affects;
   return add(std::move(p));
 }
 
@@ -206,6 +222,19 @@ std::string Params::set(const std::string& name, const std::string& text) {
       parsed[0] = static_cast<double>(it - p->choices.begin());
       break;
     }
+    case ParamKind::String:
+      if (text.find_first_of("\r\n") != std::string::npos) return bad;
+      break;
+  }
+  if (p->check) {
+    if (std::string refused = p->check(text); !refused.empty()) return name + ": " + refused;
+  }
+  if (p->kind == ParamKind::String) {
+    if (p->string_value != text) {
+      p->string_value = text;
+      changed(*p);
+    }
+    return {};
   }
   if (!std::equal(std::begin(parsed), std::end(parsed), std::begin(p->value))) {
     std::copy(std::begin(parsed), std::end(parsed), std::begin(p->value));
@@ -307,6 +336,17 @@ bool Params::drawWidgets(const std::string& prefix) {
         }
         break;
       }
+      case ParamKind::String: {
+        // Applied on Enter only: a half-typed path is not a file yet.
+        std::string& text = editing_.try_emplace(p.name, p.string_value).first->second;
+        if (ImGui::InputText(p.name.c_str(), &text, ImGuiInputTextFlags_EnterReturnsTrue)) {
+          const std::string refused = set(p.name, text);
+          refused_[p.name] = refused;
+          changed_now = refused.empty();
+        }
+        if (!ImGui::IsItemActive()) text = p.string_value;  // not typing: show what is in force
+        break;
+      }
       case ParamKind::Choice: {
         int v = p.i();
         if (ImGui::BeginCombo(p.name.c_str(), p.choice().c_str())) {
@@ -325,6 +365,9 @@ bool Params::drawWidgets(const std::string& prefix) {
     // The frame only, not the label drawn to its right.
     p.widget_max = {ImGui::GetItemRectMin().x + ImGui::CalcItemWidth(), ImGui::GetItemRectMax().y};
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", p.help.c_str());
+    if (const auto it = refused_.find(p.name); it != refused_.end() && !it->second.empty()) {
+      ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", it->second.c_str());
+    }
     any = any || changed_now;
   }
   return any;
@@ -336,13 +379,17 @@ std::string Params::listText() const {
   for (const auto& p : params_) {
     Param fallback = p;
     std::copy(std::begin(p.fallback), std::end(p.fallback), std::begin(fallback.value));
+    fallback.string_value = p.string_fallback;
     std::string range;
     if (p.kind == ParamKind::Choice) {
       range = joined(p.choices);
-    } else if (p.kind != ParamKind::Bool) {
-      range = "[" + number(p.min) + ", " + number(p.max) + "]";
-    } else {
+    } else if (p.kind == ParamKind::Bool) {
       range = "true, false";
+    } else if (p.kind != ParamKind::String) {
+      // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on "[" + std::string.
+      range.append("[").append(number(p.min)).append(", ").append(number(p.max)).append("]");
+    } else {
+      range = "text";
     }
     std::snprintf(line, sizeof line, "%-18s %-6s default %-14s %-28s %s\n", p.name.c_str(),
                   kindName(p.kind), fallback.text().c_str(), range.c_str(), p.help.c_str());
@@ -371,6 +418,9 @@ void Params::writeJson(JsonWriter& json) const {
         break;
       case ParamKind::Choice:
         json.value(p.name, p.choice());
+        break;
+      case ParamKind::String:
+        json.value(p.name, p.string_value);
         break;
     }
   }

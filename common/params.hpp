@@ -5,7 +5,9 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <glm/glm.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -23,7 +25,7 @@ enum DirtyBits : std::uint32_t {
   kDirtyAll = 0xffffffffu,
 };
 
-enum class ParamKind { Float, Int, Bool, Vec3, Choice };
+enum class ParamKind { Float, Int, Bool, Vec3, Choice, String };
 
 struct Param {
   std::string name;
@@ -34,7 +36,11 @@ struct Param {
   double min = 0, max = 1;
   bool logarithmic = false;
   std::vector<std::string> choices;
+  std::string string_value, string_fallback;  // String kind (e.g. a file path)
   std::uint32_t affects = kDirtyView;
+  // Optional extra check of a value that already parsed (say, a file that must load):
+  // returns "" or what is wrong, and set() then refuses the value with that message.
+  std::function<std::string(const std::string&)> check;
   // Where the panel drew its widget last frame (ImGui screen coordinates, y down), so a test
   // or a tutorial script can aim the mouse at it.
   glm::vec2 widget_min{0.0f}, widget_max{0.0f};
@@ -47,6 +53,7 @@ struct Param {
             static_cast<float>(value[2])};
   }
   const std::string& choice() const { return choices[static_cast<size_t>(value[0])]; }
+  const std::string& s() const { return string_value; }
   bool is(const std::string& choiceName) const { return choice() == choiceName; }
   std::string text() const;  // the value as --set would take it
 };
@@ -63,6 +70,10 @@ class Params {
                  const std::string& help, std::uint32_t affects = kDirtyView);
   Param& addChoice(const std::string& name, const std::vector<std::string>& choices,
                    const std::string& def, const std::string& help,
+                   std::uint32_t affects = kDirtyView);
+  // Free text (a file path, say): --set name=any text; an InputText in the panel, applied
+  // on Enter. Give the returned Param a `check` to refuse values that cannot be used.
+  Param& addString(const std::string& name, const std::string& def, const std::string& help,
                    std::uint32_t affects = kDirtyView);
 
   Param* find(const std::string& name);
@@ -104,6 +115,8 @@ class Params {
   Param& add(Param p);
   void changed(Param& p) { dirty_ |= p.affects; }
   std::deque<Param> params_;  // deque: references stay valid as params are added
+  // String widgets: the text being typed (applied on Enter) and the last refusal.
+  std::map<std::string, std::string> editing_, refused_;
   std::uint32_t dirty_ = kDirtyAll;
 };
 

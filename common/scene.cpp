@@ -31,7 +31,9 @@ MeshData makeGrid(int uSegments, int vSegments, Surface surface) {
   for (int j = 0; j < vSegments; ++j) {
     for (int i = 0; i < uSegments; ++i) {
       const auto a = static_cast<std::uint32_t>(j) * row + static_cast<std::uint32_t>(i);
-      for (std::uint32_t k : {a, a + row, a + 1, a + 1, a + row, a + row + 1}) {
+      // Counter-clockwise seen from outside (the side the normals point to), so culling
+      // front faces leaves the back faces (lesson 04's back_faces mode).
+      for (std::uint32_t k : {a, a + 1, a + row, a + 1, a + row + 1, a + row}) {
         m.indices.push_back(k);
       }
     }

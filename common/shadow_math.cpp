@@ -38,6 +38,11 @@ glm::mat4 shadowTextureMatrix(const glm::mat4& lightProjection, const glm::mat4&
   return biasMatrix() * lightProjection * lightView;
 }
 
+glm::mat4 planarShadowMatrix(glm::vec4 plane, glm::vec4 light) {
+  // glm::outerProduct(c, r) is the column vector c times the row vector r: here L P^T.
+  return glm::dot(plane, light) * glm::mat4(1.0f) - glm::outerProduct(light, plane);
+}
+
 bool fitNearFar(const glm::mat4& lightView, const Bounds& bounds, bool directional, float& near,
                 float& far) {
   if (bounds.empty()) return false;

@@ -28,6 +28,15 @@ glm::mat4 lightProjection(const LightFrustum& frustum);
 // The texture matrix of seeds 000/004: B * P_light * V_light (times M in the shader).
 glm::mat4 shadowTextureMatrix(const glm::mat4& lightProjection, const glm::mat4& lightView);
 
+// Blinn's projected shadow (seed 001 "Planar Projected Shadows", seed 003 "Projection
+// Matrix"): M = (P.L) I - L P^T flattens any point onto the plane P = (A, B, C, D),
+// Ax + By + Cz + D = 0, along the line through the light L: (x, y, z, 1) for a point light,
+// (direction toward the light, 0) for a directional one (then M is seed 001's matrix).
+// The result is homogeneous: w = P.L - P.v (point light). Orient P so that P.L > 0 and
+// every point between the plane and the light gets w > 0, while points above the light
+// get w < 0, which the GPU's clipper removes (they cannot cast onto the plane).
+glm::mat4 planarShadowMatrix(glm::vec4 plane, glm::vec4 light);
+
 // Near/far along the light's view axis that just enclose `bounds` (e.g. the casters),
 // with a small margin. For a spot light, near stays positive. Returns false (and leaves
 // near/far alone) when the bounds are empty or lie entirely behind the light.

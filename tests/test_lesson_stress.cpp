@@ -34,6 +34,8 @@ std::string randomValue(const Param& p, std::mt19937& rng) {
              std::to_string(value());
     case ParamKind::Choice:
       return p.choices[std::uniform_int_distribution<size_t>(0, p.choices.size() - 1)(rng)];
+    case ParamKind::String:
+      return p.text();  // free text (a path): keep what is in force
   }
   return {};
 }

@@ -108,5 +108,60 @@ TEST_F(ParamsTest, DeclaringTwiceIsAProgrammingError) {
   EXPECT_THROW(params.addBool("inset", false, "again"), std::logic_error);
 }
 
+// ---------------------------------------------------------------- free text (file paths)
+
+TEST(StringParam, TakesAnyTextListsReportsAndMarksDirtyOnlyOnAChange) {
+  Params params;
+  Param& image = params.addString("projector.image", "builtin", "slide", kDirtyResources);
+  params.consume(kDirtyAll);
+  EXPECT_EQ(image.kind, ParamKind::String);
+  EXPECT_EQ(image.s(), "builtin");
+  EXPECT_EQ(params.assign("projector.image=/tmp/a b,c=d.png"), "") << "spaces, commas, '='";
+  EXPECT_EQ(image.s(), "/tmp/a b,c=d.png");
+  EXPECT_EQ(image.text(), "/tmp/a b,c=d.png") << "text() is what --set takes back";
+  EXPECT_TRUE(params.consume(kDirtyResources));
+  EXPECT_EQ(params.set("projector.image", "/tmp/a b,c=d.png"), "");
+  EXPECT_FALSE(params.consume(kDirtyResources)) << "the same text is not a change";
+  EXPECT_EQ(params.set("projector.image", ""), "") << "empty is text too";
+  EXPECT_NE(params.set("projector.image", "two\nlines"), "") << "a report line stays one line";
+  EXPECT_EQ(image.s(), "");
+
+  const std::string list = params.listText();
+  EXPECT_NE(list.find("projector.image"), std::string::npos);
+  EXPECT_NE(list.find("string"), std::string::npos);
+  EXPECT_NE(list.find("default builtin"), std::string::npos) << list;
+  JsonWriter json;
+  json.beginObject();
+  ASSERT_EQ(params.set("projector.image", "say \"hi\".png"), "");
+  params.writeJson(json);
+  json.endObject();
+  EXPECT_NE(json.str().find(R"("projector.image": "say \"hi\".png")"), std::string::npos)
+      << json.str();
+}
+
+TEST(StringParam, ACheckRefusesWithOneLineAndChangesNothing) {
+  Params params;
+  Param& image = params.addString("projector.image", "builtin", "slide", kDirtyResources);
+  image.check = [](const std::string& text) -> std::string {
+    return text == "builtin" || text.ends_with(".png") ? "" : "cannot read '" + text + "'";
+  };
+  params.consume(kDirtyAll);
+  const std::string error = params.set("projector.image", "missing.jpg");
+  EXPECT_EQ(error, "projector.image: cannot read 'missing.jpg'");
+  EXPECT_EQ(image.s(), "builtin");
+  EXPECT_EQ(params.dirty(), 0u);
+  EXPECT_EQ(params.set("projector.image", "slide.png"), "");
+  EXPECT_EQ(image.s(), "slide.png");
+  // A check works on the other kinds too, after their own parsing.
+  Param& size = params.addInt("shadow.size", 1024, 64, 4096, "size");
+  size.check = [](const std::string& text) -> std::string {
+    return std::stoi(text) % 2 == 0 ? "" : "must be even";
+  };
+  EXPECT_EQ(params.set("shadow.size", "513"), "shadow.size: must be even");
+  EXPECT_EQ(size.i(), 1024);
+  EXPECT_NE(params.set("shadow.size", "abc").find("integer"), std::string::npos)
+      << "the kind's own parsing comes first";
+}
+
 }  // namespace
 }  // namespace shadows

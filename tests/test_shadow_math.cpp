@@ -130,5 +130,87 @@ TEST(SphereOutsideFrustum, CullsOnlyWhatIsReallyOutside) {
   EXPECT_TRUE(sphereOutsideFrustum(vp, {0, 0, -12}, 1.0f));     // beyond far
 }
 
+// ---------------------------------------------------------------- planar projected shadows
+
+// The plane through `point` with unit normal `normal`, as (A, B, C, D).
+glm::vec4 planeThrough(glm::vec3 point, glm::vec3 normal) {
+  const glm::vec3 n = glm::normalize(normal);
+  return {n, -glm::dot(n, point)};
+}
+
+TEST(PlanarShadowMatrix, PointLightSendsPointsOntoThePlaneAlongTheLightRay) {
+  // A tilted plane and a light on its positive side; points between them project onto the
+  // plane, on the ray from the light through the point, beyond the point.
+  const glm::vec4 plane = planeThrough({0.5f, -0.3f, 0.2f}, {0.3f, 1.0f, -0.2f});
+  const glm::vec3 light{1.5f, 6.0f, 2.0f};
+  const glm::mat4 m = planarShadowMatrix(plane, glm::vec4(light, 1.0f));
+  const glm::vec3 points[] = {{0, 1, 0}, {-1.2f, 0.5f, 0.7f}, {2, 3, -1}, {1.4f, 5.5f, 1.9f}};
+  for (const glm::vec3& v : points) {
+    ASSERT_GT(glm::dot(plane, glm::vec4(v, 1)), 0.0f) << "test point on the light's side";
+    const glm::vec4 h = m * glm::vec4(v, 1.0f);
+    ASSERT_GT(h.w, 0.0f) << "between the plane and the light: w > 0, kept by the clipper";
+    const glm::vec3 p = glm::vec3(h) / h.w;
+    EXPECT_NEAR(glm::dot(plane, glm::vec4(p, 1)), 0.0f, 1e-4f) << "on the plane";
+    const glm::vec3 to_point = v - light, to_shadow = p - light;
+    EXPECT_NEAR(glm::length(glm::cross(to_point, to_shadow)) / glm::length(to_shadow), 0.0f, 1e-4f)
+        << "on the line from the light through the point";
+    EXPECT_GE(glm::dot(to_shadow, to_point), glm::dot(to_point, to_point) - 1e-4f)
+        << "beyond the point, not between the light and it";
+  }
+}
+
+TEST(PlanarShadowMatrix, DirectionalLightSendsPointsAlongTheDirection) {
+  const glm::vec4 plane = planeThrough({0, -0.5f, 0}, {0, 1, 0.4f});
+  const glm::vec3 toward_light = glm::normalize(glm::vec3(-2, 4, -1));
+  const glm::mat4 m = planarShadowMatrix(plane, glm::vec4(toward_light, 0.0f));
+  for (const glm::vec3& v : {glm::vec3(0, 1, 0), glm::vec3(1.5f, 2, -3), glm::vec3(-4, 0.2f, 2)}) {
+    const glm::vec4 h = m * glm::vec4(v, 1.0f);
+    EXPECT_NEAR(h.w, glm::dot(plane, glm::vec4(toward_light, 0)), kEps) << "w = P.L for all";
+    const glm::vec3 p = glm::vec3(h) / h.w;
+    EXPECT_NEAR(glm::dot(plane, glm::vec4(p, 1)), 0.0f, 1e-4f);
+    EXPECT_NEAR(glm::length(glm::cross(v - p, toward_light)), 0.0f, 1e-4f) << "parallel rays";
+    EXPECT_GT(glm::dot(v - p, toward_light), 0.0f) << "the point lies toward the light";
+  }
+}
+
+TEST(PlanarShadowMatrix, MatchesSeed001ForADirectionAndTheGroundFormulaForAPoint) {
+  // Seed 001 writes the matrix for (x, y, z), the vector to the light, row by row:
+  // [By+Cz, -Bx, -Cx, -Dx; -Ay, Ax+Cz, -Cy, -Dy; -Az, -Bz, Ax+By, -Dz; 0, 0, 0, Ax+By+Cz].
+  const float a = 0.2f, b = 0.9f, c = -0.3f, d = 0.7f, x = 1.5f, y = 4.0f, z = -2.0f;
+  const float rows[4][4] = {{b * y + c * z, -b * x, -c * x, -d * x},
+                            {-a * y, a * x + c * z, -c * y, -d * y},
+                            {-a * z, -b * z, a * x + b * y, -d * z},
+                            {0, 0, 0, a * x + b * y + c * z}};
+  const glm::mat4 m = planarShadowMatrix({a, b, c, d}, {x, y, z, 0});
+  for (int row = 0; row < 4; ++row) {
+    for (int col = 0; col < 4; ++col) EXPECT_NEAR(m[col][row], rows[row][col], kEps);
+  }
+  // Seed 001 "Computing Shadow Vertex" (and 003's similar triangles) for the ground y = 0:
+  // x_p = x_l - y_l (x - x_l) / (y - y_l), and the same for z.
+  const glm::vec3 light{1, 5, 2}, v{-0.5f, 1.5f, 0.5f};
+  const glm::vec4 h = planarShadowMatrix({0, 1, 0, 0}, glm::vec4(light, 1)) * glm::vec4(v, 1);
+  EXPECT_NEAR(h.x / h.w, light.x - light.y * (v.x - light.x) / (v.y - light.y), kEps);
+  EXPECT_NEAR(h.y / h.w, 0.0f, kEps);
+  EXPECT_NEAR(h.z / h.w, light.z - light.y * (v.z - light.z) / (v.y - light.y), kEps);
+}
+
+TEST(PlanarShadowMatrix, WSeparatesWhatCanCastFromWhatCannot) {
+  // Ground plane, light at height 4: w = 4 - y. Points on the plane stay put (w = 4),
+  // points at the light's height go to infinity (w = 0), points above it get w < 0 and
+  // are removed by the clipper instead of becoming an inverted "anti-shadow".
+  const glm::mat4 m = planarShadowMatrix({0, 1, 0, 0}, {1, 4, -1, 1});
+  const glm::vec4 on_plane = m * glm::vec4(2, 0, 3, 1);
+  EXPECT_NEAR(on_plane.w, 4.0f, kEps);
+  EXPECT_NEAR(on_plane.x / on_plane.w, 2.0f, kEps);
+  EXPECT_NEAR(on_plane.z / on_plane.w, 3.0f, kEps);
+  EXPECT_NEAR((m * glm::vec4(0, 4, 0, 1)).w, 0.0f, kEps);
+  EXPECT_LT((m * glm::vec4(0, 5, 0, 1)).w, 0.0f);
+  // The same plane written with the opposite sign is the same plane, but every w flips:
+  // the real shadow would be clipped away and only the parts above the light kept.
+  const glm::mat4 flipped = planarShadowMatrix({0, -1, 0, 0}, {1, 4, -1, 1});
+  EXPECT_LT((flipped * glm::vec4(0, 1, 0, 1)).w, 0.0f);
+  for (int k = 0; k < 4; ++k) EXPECT_TRUE(std::isfinite(m[k][k]));
+}
+
 }  // namespace
 }  // namespace shadows

@@ -1,0 +1,256 @@
+// Lesson 01: Blinn's projected planar shadows (seed 001 "Planar Projected Shadows" to
+// "Generalized Shadows"; seed 003 slides 14-21, "Projection Shadows" to "Projection Shadow
+// Summary").
+//
+//   Draw the scene lit. Then draw every caster again through one 4x4 matrix that flattens
+//   it onto the receiver plane along the light's rays, M = (P.L) I - L P^T, in a dark
+//   colour blended over the receiver. The stencil buffer (003 slide 19) keeps each
+//   receiver pixel darkened at most once, and only where the receiver is the visible
+//   surface.
+//
+// Every fix is one --set away, and so is the artifact it removes.
+#include <imgui.h>
+
+#include <algorithm>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "app.hpp"
+#include "json.hpp"
+
+namespace shadows {
+
+class ProjectedPlanar final : public Lesson {
+ public:
+  std::string title() const override {
+    return "Projected planar shadows: flatten the casters onto the plane, blend them dark";
+  }
+  std::string seeds() const override {
+    return "seed 001: Planar Projected Shadows .. Generalized Shadows; seed 003: slides 14-21";
+  }
+  std::vector<std::string> debugViews() const override {
+    return {"overdraw"};  // how many shadow triangles land on each pixel
+  }
+
+  void declare(Params& p) override {
+    p.addFloat("plane.tilt", 0, -40, 40, "tilt the receiver (the floor) about x, degrees");
+    p.addFloat("plane.offset", 0, -1, 1.5f, "move the receiver along its normal");
+    p.addFloat("dimming", 0.4f, 0, 1, "light left under a shadow: the blend keeps this much");
+    p.addBool("fix.receiver", true,
+              "stencil: darken only where the receiver is seen (off: spills past its edge)");
+    p.addBool("fix.once", true,
+              "stencil: darken each pixel once (off: overlapping triangles blend twice)");
+    p.addBool("fix.offset", true,
+              "polygon offset toward the eye (off, with fix.receiver off: z-fighting)");
+    p.addBool("fix.clip", true,
+              "clip casters at the plane (off: parts behind the receiver cast false shadows)");
+    p.addBool("fix.homogeneous", true,
+              "leave w to the clipper (off: divide in the shader; above the light inverts)");
+  }
+
+  void init() override {
+    scene_program_ =
+        Program(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
+    shadow_program_ =
+        Program(lessonFile(LESSON_DIR, "shadow.vert"), lessonFile(LESSON_DIR, "shadow.frag"));
+  }
+
+  void render(Frame& f) override {
+    Params& p = f.params;
+    const int mode = f.mode == "visibility" ? 1 : f.mode == "overdraw" ? 2 : 0;
+    const bool projecting = placeReceiver(f);
+
+    // 1. The scene, lit (slide 17: "render scene, full lighting"). The receiver comes last
+    //    and marks stencil = 1 where it is the visible surface (slide 19).
+    {
+      auto timing = f.measure.pass("scene");
+      f.bindTarget();
+      const glm::vec3 sky = mode == 0 ? glm::vec3(0.55f, 0.62f, 0.72f) : glm::vec3(0.0f);
+      glClearColor(sky.r, sky.g, sky.b, 1.0f);
+      glClearStencil(0);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+      scene_program_.set("uViewProjection", f.projection * f.view);
+      scene_program_.set("uMode", mode);
+      f.setLightingUniforms(scene_program_, 1.0f);
+      for (size_t i = 0; i < f.scene.objects.size(); ++i) {
+        if (i != receiver_) f.drawObject(scene_program_, i);
+      }
+      glEnable(GL_STENCIL_TEST);
+      glStencilMask(0xFF);
+      glStencilFunc(GL_ALWAYS, 1, 0xFF);
+      glStencilOp(GL_KEEP, GL_KEEP, p.at("fix.receiver").b() ? GL_REPLACE : GL_KEEP);
+      if (receiver_ < f.scene.objects.size()) f.drawObject(scene_program_, receiver_);
+    }
+    if (projecting) drawShadows(f, mode);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_CLIP_DISTANCE0);
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+  }
+
+  void panel(Frame& f) override {
+    // What cannot cast, and why, in a corner of its own where it cannot scroll away.
+    if (notes_.empty()) return;
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(f.width) - 8.0f, 8.0f), ImGuiCond_Always,
+                            ImVec2(1.0f, 0.0f));
+    ImGui::SetNextWindowBgAlpha(0.75f);
+    ImGui::Begin("what cannot cast", nullptr,
+                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing);
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 20.0f);
+    for (const auto& note : notes_) ImGui::Bullet(), ImGui::TextWrapped("%s", note.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::End();
+  }
+
+  void report(JsonWriter& json) const override {
+    json.beginArray("receiver_plane");
+    for (int k = 0; k < 4; ++k) json.value("", plane_[k]);
+    json.endArray();
+    json.value("casters_drawn", casters_drawn_);
+    json.beginArray("notes");
+    for (const auto& note : notes_) json.value("", note);
+    json.endArray();
+  }
+
+ private:
+  // The receiver is the scene's floor (its receiver-only plane), tilted and moved by the
+  // sliders. The runner moves the object itself, so the truth sees the same plane. Returns
+  // whether anything can be projected, and says why not in notes_.
+  bool placeReceiver(Frame& f) {
+    notes_.clear();
+    casters_drawn_ = 0;
+    receiver_ = f.scene.objects.size();
+    for (size_t i = 0; i < f.scene.objects.size(); ++i) {
+      const SceneObject& o = f.scene.objects[i];
+      if (o.receiver && !o.caster) receiver_ = i;
+    }
+    if (receiver_ == f.scene.objects.size()) {
+      notes_.push_back("this scene has no receiver plane: nothing to project onto");
+      return false;
+    }
+    if (f.scene.name != preset_) {  // the preset's floor (a y-up plane), before our tilt
+      preset_ = f.scene.name;
+      preset_model_ = makeScene(preset_).objects[receiver_].model;
+    }
+    const glm::vec3 centre{preset_model_[3]};
+    const glm::mat4 tilt = glm::rotate(glm::mat4(1.0f), glm::radians(f.params.at("plane.tilt").f()),
+                                       glm::vec3(1, 0, 0));
+    const glm::vec3 normal{tilt * glm::vec4(0, 1, 0, 0)};
+    const glm::mat4 model =
+        glm::translate(glm::mat4(1.0f), centre + f.params.at("plane.offset").f() * normal) * tilt *
+        glm::translate(glm::mat4(1.0f), -centre) * preset_model_;
+    f.runner.setObjectModel(receiver_, model);
+
+    // P = (A, B, C, D) through the floor's centre; L homogeneous: w = 0 for a direction.
+    plane_ = glm::vec4(normal, -glm::dot(normal, glm::vec3(model[3])));
+    light_ = f.light.directional ? glm::vec4(-f.light.direction, 0.0f)
+                                 : glm::vec4(f.light.position, 1.0f);
+    if (glm::dot(plane_, light_) <= 1e-4f) {
+      notes_.push_back(
+          "the light is level with or behind the receiver plane: the plane is "
+          "unlit and there is nothing to project");
+      return false;
+    }
+    return true;
+  }
+
+  // Which casters can reach the plane: a point at or above the light's height (P.v >= P.L)
+  // cannot, nor can one behind the receiver (P.v < 0). Skips wholly hopeless casters.
+  bool canCast(const Frame& f, size_t index) {
+    const SceneObject& o = f.scene.objects[index];
+    float lowest = 1e30f, highest = -1e30f;
+    for (const Vertex& v : o.mesh.vertices) {
+      const float d = glm::dot(plane_, o.model * glm::vec4(v.position, 1.0f));
+      lowest = std::min(lowest, d), highest = std::max(highest, d);
+    }
+    const float light_height = glm::dot(plane_, light_);  // for a point light
+    const bool clip = f.params.at("fix.clip").b();
+    if (light_.w > 0.0f && lowest >= light_height) {
+      notes_.push_back(o.name +
+                       ": entirely at or above the light, it cannot reach the plane: "
+                       "skipped");
+      return false;
+    }
+    if (clip && highest <= 0.0f) {
+      notes_.push_back(o.name + ": entirely behind the receiver: skipped");
+      return false;
+    }
+    if (light_.w > 0.0f && highest >= light_height) {
+      notes_.push_back(o.name + (f.params.at("fix.homogeneous").b()
+                                     ? ": reaches above the light; the clipper cuts it at w = 0"
+                                     : ": reaches above the light; dividing by w in the shader "
+                                       "flips that part into an anti-shadow"));
+    }
+    if (lowest < 0.0f) {
+      notes_.push_back(o.name + (clip ? ": partly behind the receiver; clipped at the plane"
+                                      : ": partly behind the receiver; casts a false shadow"));
+    }
+    return true;
+  }
+
+  // 2. Each caster again, through M, in black (slide 17: "render selected shadow caster with
+  //    framebuffer blending enabled"). The fixes are GL state.
+  void drawShadows(Frame& f, int mode) {
+    Params& p = f.params;
+    auto timing = f.measure.pass("shadow");
+    const bool receiver = p.at("fix.receiver").b(), once = p.at("fix.once").b();
+    // Slide 19: draw only where stencil = 1 (the receiver), and zero it on the way, so every
+    // receiver pixel is touched at most once. Without the receiver mark, "once" still works
+    // on a stencil that starts at 0.
+    if (receiver || once) {
+      glStencilFunc(GL_EQUAL, receiver ? 1 : 0, 0xFF);
+      glStencilOp(GL_KEEP, GL_KEEP, !once ? GL_KEEP : receiver ? GL_ZERO : GL_INCR);
+    } else {
+      glDisable(GL_STENCIL_TEST);
+    }
+    // With the stencil mark the receiver is known to be the visible surface there: no depth
+    // test at all (slide 19). Without it, the shadow lies exactly in the plane and needs an
+    // offset toward the eye to win the depth test (slide 13: "elevate above hit polygon").
+    if (receiver) glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    if (p.at("fix.offset").b()) {
+      glEnable(GL_POLYGON_OFFSET_FILL);
+      glPolygonOffset(-1.0f, -2.0f);
+    }
+    if (p.at("fix.clip").b()) glEnable(GL_CLIP_DISTANCE0);
+    shadow_program_.set("uClip", p.at("fix.clip").b() ? 1 : 0);
+    glEnable(GL_BLEND);
+    if (mode == 2) {
+      glBlendFunc(GL_ONE, GL_ONE);  // overdraw: each layer adds the same amount
+      shadow_program_.set("uShadowColor", glm::vec4(0.3f, 0.15f, 0.0f, 1.0f));
+    } else {
+      // dst = dst * (1 - a): a = 1 - dimming, and the shadow term alone is 0 (visibility).
+      glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+      const float a = mode == 1 ? 1.0f : 1.0f - p.at("dimming").f();
+      shadow_program_.set("uShadowColor", glm::vec4(0.0f, 0.0f, 0.0f, a));
+    }
+    shadow_program_.set("uShadowMatrix", planarShadowMatrix(plane_, light_));
+    shadow_program_.set("uViewProjection", f.projection * f.view);
+    shadow_program_.set("uPlane", plane_);
+    shadow_program_.set("uDivide", p.at("fix.homogeneous").b() ? 0 : 1);
+    long long skipped = 0;
+    for (size_t i = 0; i < f.scene.objects.size(); ++i) {
+      if (!f.scene.objects[i].caster || i == receiver_) continue;
+      if (!canCast(f, i)) {
+        ++skipped;
+        continue;
+      }
+      f.drawObject(shadow_program_, i);
+      ++casters_drawn_;
+    }
+    f.measure.count("skipped_casters", skipped);
+  }
+
+  Program scene_program_, shadow_program_;
+  size_t receiver_ = 0;
+  std::string preset_;
+  glm::mat4 preset_model_{1.0f};
+  glm::vec4 plane_{0.0f}, light_{0.0f};
+  long long casters_drawn_ = 0;
+  std::vector<std::string> notes_;
+};
+
+SHADOWS_LESSON(ProjectedPlanar);
+
+}  // namespace shadows

@@ -1,0 +1,5 @@
+#version 330 core
+// A shadow polygon is one flat colour; the blend function decides what it does.
+uniform vec4 uShadowColor;
+out vec4 outColor;
+void main() { outColor = uShadowColor; }

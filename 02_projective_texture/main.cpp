@@ -1,0 +1,248 @@
+// Lesson 02: the slide projector (seed 004 "What is projective texturing?" to "Watch out
+// for reverse projection!"; seed 000 "About Projective Texturing" and "Careful about Back
+// Projecting Shadow Maps").
+//
+//   Each vertex gets (s, t, r, q) = B * P_projector * V_projector * M * p; textureProj
+//   looks the slide up at (s/q, t/q). Behind the projector q < 0 and the division mirrors
+//   the slide back into the scene: reverse projection, with seed 000's fixes to choose.
+//
+// Lesson 03 uses this very matrix with a depth map in place of the slide.
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "app.hpp"
+#include "json.hpp"
+
+namespace shadows {
+
+namespace {
+
+// The built-in slide: a checkerboard in a yellow frame, a red arrow pointing up and a green
+// square top left, so a mirrored (the square moves right) or a turned (the arrow points
+// down) projection shows at once.
+Image makeSlide(int n) {
+  Image image{n, n, std::vector<std::uint8_t>(static_cast<size_t>(n) * n * 4)};
+  for (int y = 0; y < n; ++y) {  // rows bottom-up, as GL and image.hpp keep them
+    for (int x = 0; x < n; ++x) {
+      const float u = (static_cast<float>(x) + 0.5f) / static_cast<float>(n);
+      const float v = (static_cast<float>(y) + 0.5f) / static_cast<float>(n);
+      glm::vec3 c = (static_cast<int>(u * 8) + static_cast<int>(v * 8)) % 2 == 0
+                        ? glm::vec3(0.95f, 0.93f, 0.85f)
+                        : glm::vec3(0.25f, 0.45f, 0.85f);
+      if (std::min({u, v, 1 - u, 1 - v}) < 0.035f) c = {1.0f, 0.8f, 0.1f};
+      const bool shaft = std::abs(u - 0.5f) < 0.06f && v > 0.15f && v < 0.6f;
+      const bool head = v >= 0.6f && v < 0.88f && std::abs(u - 0.5f) < 0.8f * (0.88f - v);
+      if (shaft || head) c = {0.9f, 0.12f, 0.1f};
+      if (u > 0.1f && u < 0.3f && v > 0.7f && v < 0.9f) c = {0.1f, 0.75f, 0.2f};
+      for (int k = 0; k < 3; ++k) {
+        image.rgba[(static_cast<size_t>(y) * n + x) * 4 + k] =
+            static_cast<std::uint8_t>(std::lround(255.0f * c[k]));
+      }
+      image.rgba[(static_cast<size_t>(y) * n + x) * 4 + 3] = 255;
+    }
+  }
+  return image;
+}
+
+bool isBuiltin(const std::string& image) {
+  return image.empty() || image == "builtin";
+}
+
+}  // namespace
+
+class ProjectiveTexture final : public Lesson {
+ public:
+  std::string title() const override {
+    return "Projective texturing: a slide projector with the texture matrix B P V M";
+  }
+  std::string seeds() const override {
+    return "seed 004: projective texturing, reverse projection; seed 000: back-projection fixes";
+  }
+  std::vector<std::string> debugViews() const override { return {"texcoords", "slide"}; }
+
+  void declare(Params& p) override {
+    Param& image = p.addString("projector.image", "builtin",
+                               "builtin (a procedural slide) or the path of a PNG to project");
+    // Checked when set, so a missing or broken file is bad input, named, before any frame.
+    image.check = [](const std::string& path) -> std::string {
+      if (isBuiltin(path)) return {};
+      try {
+        const Image loaded = readPng(path);
+        if (loaded.width > 8192 || loaded.height > 8192) return path + ": larger than 8192";
+      } catch (const std::exception& e) {
+        return e.what();
+      }
+      return {};
+    };
+    p.addFloat("falloff", 0, 0, 1,
+               "spotlight falloff: the slide fades over this part of the cone, 0 = off");
+    p.addBool("fix.q_test", true, "no light where q <= 0, i.e. behind the projector");
+    p.addChoice("fix.behind", {"off", "skip", "clip"}, "skip",
+                "geometry behind the projector: skip whole objects, or clip at its plane");
+    p.addBool("inset", true, "show the slide in a corner");
+  }
+
+  void init() override {
+    program_ =
+        Program(lessonFile(LESSON_DIR, "projector.vert"), lessonFile(LESSON_DIR, "projector.frag"));
+    image_program_ =
+        Program(commonShaderDir() / "fullscreen.vert", commonShaderDir() / "image.frag");
+    glGenVertexArrays(1, &empty_vao_);
+  }
+  ~ProjectiveTexture() override {
+    if (empty_vao_ != 0) glDeleteVertexArrays(1, &empty_vao_);
+  }
+
+  void render(Frame& f) override {
+    Params& p = f.params;
+    loadSlide(p.at("projector.image").s());
+    // The projector is the light: its frustum takes the slide's aspect, so nothing stretches.
+    const LightFrustum frustum =
+        f.light.frustum(static_cast<float>(slide_.width()) / static_cast<float>(slide_.height()));
+    const glm::mat4 projection = lightProjection(frustum);
+    f.light_view_projection = projection * f.light.view;  // only its frustum is counted
+    const glm::vec3 axis = f.light.direction;
+    const glm::vec4 projector_plane{axis, -glm::dot(axis, f.light.position)};
+
+    f.bindTarget();
+    const float grey = f.mode == "visibility" ? 0.0f : 0.13f;  // visibility: 0, not counted
+    glClearColor(grey, grey, grey * 1.2f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (f.mode == "slide") {
+      drawSlide(f, true);
+      return;
+    }
+    const int mode = f.mode == "visibility" ? 1 : f.mode == "texcoords" ? 2 : 0;
+    slide_.bind(0);
+    program_.set("uSlide", 0);
+    program_.set("uViewProjection", f.projection * f.view);
+    program_.set("uTextureMatrix", shadowTextureMatrix(projection, f.light.view));  // B P V
+    program_.set("uProjectorPlane", projector_plane);
+    program_.set("uMode", mode);
+    program_.set("uQTest", p.at("fix.q_test").b() ? 1 : 0);
+    program_.set("uFalloff", p.at("falloff").f());
+    program_.set("uHalfAngle", glm::radians(0.5f * frustum.fov));
+    program_.set("uExtent", frustum.extent);
+    program_.set("uAxis", axis);
+    program_.set("uClip", 0);
+    f.setLightingUniforms(program_, 0.0f);
+
+    {  // Pass 1: ambient light on everything (or the texcoords view).
+      auto timing = f.measure.pass("ambient");
+      program_.set("uPass", 0);
+      f.drawObjects(program_, Objects::All);
+    }
+    if (mode == 2) return;
+    projectorPass(f, projector_plane);
+    if (mode == 0 && p.at("inset").b()) drawSlide(f, false);
+  }
+
+  void panel(Frame& f) override {
+    ImGui::Text("slide: %s, %dx%d", loaded_.c_str(), slide_.width(), slide_.height());
+    if (f.light.directional) {
+      ImGui::TextWrapped(
+          "parallel projector: q = 1 everywhere, so the q test cannot see what "
+          "is behind it; falloff or fix.behind can");
+    }
+  }
+
+  void report(JsonWriter& json) const override {
+    json.value("slide", loaded_);
+    json.beginArray("slide_size");
+    json.value("", slide_.width());
+    json.value("", slide_.height());
+    json.endArray();
+    json.value("objects_skipped_behind", skipped_);
+  }
+
+ private:
+  // Pass 2: the projector's light, added on the same surfaces (depth EQUAL). Seed 000:
+  // "simply avoid drawing geometry behind the light" (skip), or a clip plane (clip).
+  void projectorPass(Frame& f, const glm::vec4& projector_plane) {
+    auto timing = f.measure.pass("projector");
+    const std::string& behind = f.params.at("fix.behind").choice();
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glDepthFunc(GL_EQUAL);
+    glDepthMask(GL_FALSE);
+    if (behind == "clip") {
+      // Clipping makes new vertices whose depths are not bit-identical to pass 1's, so the
+      // cut triangles would fail an EQUAL test: compare LEQUAL, nudged toward the eye.
+      glEnable(GL_CLIP_DISTANCE0);
+      glEnable(GL_POLYGON_OFFSET_FILL);
+      glPolygonOffset(-1.0f, -1.0f);
+      glDepthFunc(GL_LEQUAL);
+    }
+    program_.set("uClip", behind == "clip" ? 1 : 0);
+    program_.set("uPass", 1);
+    skipped_ = 0;
+    for (size_t i = 0; i < f.scene.objects.size(); ++i) {
+      if (behind == "skip" && entirelyBehind(f.scene.objects[i], projector_plane)) {
+        ++skipped_;
+        continue;
+      }
+      f.drawObject(program_, i);
+    }
+    f.measure.count("skipped_behind_projector", skipped_);
+    glDisable(GL_CLIP_DISTANCE0);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_BLEND);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+  }
+
+  // Uploads the slide when the parameter names another one. Its border is black: outside
+  // the slide the projector sends no light.
+  void loadSlide(const std::string& path) {
+    const std::string name = isBuiltin(path) ? "builtin" : path;
+    if (name == loaded_ && slide_.id() != 0) return;
+    const Image image = name == "builtin" ? makeSlide(256) : readPng(path);
+    slide_ = Texture::color(image.width, image.height, GL_RGBA8);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                    image.rgba.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const float black[4] = {0, 0, 0, 1};
+    glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, black);
+    loaded_ = name;
+  }
+
+  static bool entirelyBehind(const SceneObject& object, const glm::vec4& plane) {
+    const Bounds b = object.worldBounds();
+    for (int corner = 0; corner < 8; ++corner) {
+      const glm::vec3 c{(corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                        (corner & 4) ? b.max.z : b.min.z};
+      if (glm::dot(plane, glm::vec4(c, 1.0f)) > 0.0f) return false;
+    }
+    return true;
+  }
+
+  // The slide itself, over the whole target or in the bottom-right corner.
+  void drawSlide(const Frame& f, bool fullscreen) const {
+    const int side = std::max(16, std::min(f.width, f.height) / 4);
+    const int wide = std::max(1, side * slide_.width() / slide_.height());  // keep its aspect
+    if (!fullscreen) glViewport(f.width - wide - 8, 8, wide, side);
+    glDisable(GL_DEPTH_TEST);
+    slide_.bind(0);
+    image_program_.use();
+    image_program_.set("uImage", 0);
+    glBindVertexArray(empty_vao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    countDrawCall();
+    glEnable(GL_DEPTH_TEST);
+    f.bindTarget();
+  }
+
+  Program program_, image_program_;
+  Texture slide_;
+  std::string loaded_;
+  GLuint empty_vao_ = 0;
+  long long skipped_ = 0;
+};
+
+SHADOWS_LESSON(ProjectiveTexture);
+
+}  // namespace shadows

@@ -1,0 +1,66 @@
+#version 330 core
+// The slide projector (seed 004 "Projective texturing pixel shader"): the colour at
+// (s/q, t/q), fetched by textureProj, lights the surface like a coloured spotlight.
+#include "lighting.glsl"
+
+in vec3 vWorld;
+in vec3 vNormal;
+in vec4 vSlideCoord;
+uniform sampler2D uSlide;  // border black: no light outside the slide
+uniform vec3 uColor;
+uniform int uMode;          // 0 shaded, 1 visibility, 2 texcoords
+uniform int uPass;          // 0 ambient light on everything, 1 the projector's light, added
+uniform int uQTest;         // 1: q <= 0 means behind the projector: no light
+uniform float uFalloff;     // 0 off; else the spotlight fades over this part of the cone
+uniform float uHalfAngle;   // the cone: half the projector's field of view, radians
+uniform float uExtent;      // a parallel projector: the half width of its beam
+uniform vec3 uAxis;         // where the projector points
+out vec4 outColor;
+
+// Seed 000's first back-projection fix: a spotlight term with the proper cut-off, which is
+// 0 behind the projector because the angle to its axis is over 90 degrees there.
+float spot() {
+  if (uFalloff <= 0.0) return 1.0;
+  vec3 d = vWorld - uLightPos;
+  float along = dot(d, uAxis);
+  if (uLightDirectional == 1) {
+    if (along <= 0.0) return 0.0;
+    float radial = length(d - along * uAxis) / uExtent;
+    return 1.0 - smoothstep(1.0 - uFalloff, 1.0, radial);
+  }
+  float cos_angle = along / max(length(d), 1e-6);
+  return smoothstep(cos(uHalfAngle), cos(uHalfAngle * (1.0 - uFalloff)), cos_angle);
+}
+
+// Where the projector's light lands at all (the shadow term of this lesson: 1 or 0).
+bool reaches() {
+  vec4 c = vSlideCoord;
+  if (uQTest == 1 && c.q <= 0.0) return false;  // behind: (s/q, t/q) would mirror the slide
+  if (abs(c.q) < 1e-6) return false;             // in the projector's own plane
+  vec2 st = c.st / c.q;
+  return all(greaterThanEqual(st, vec2(0.0))) && all(lessThanEqual(st, vec2(1.0))) &&
+         spot() > 0.0;
+}
+
+void main() {
+  vec3 n = normalize(vNormal);
+  if (uMode == 2) {  // texcoords: (s/q, t/q) as red/green, blue where q < 0 (no fix applied)
+    vec2 st = vSlideCoord.st / vSlideCoord.q;
+    bool inside = all(greaterThanEqual(st, vec2(0.0))) && all(lessThanEqual(st, vec2(1.0)));
+    vec3 base = uColor * (0.1 + 0.2 * max(dot(n, vec3(0.0, 1.0, 0.0)), 0.0));
+    outColor = vec4(inside ? vec3(st, vSlideCoord.q < 0.0 ? 1.0 : 0.0) : base, 1.0);
+    return;
+  }
+  if (uPass == 0) {
+    outColor = vec4(uMode == 1 ? vec3(0.0) : 0.15 * uColor, 1.0);
+    return;
+  }
+  if (!reaches()) discard;
+  if (uMode == 1) {
+    outColor = vec4(1.0);
+    return;
+  }
+  float nl = max(dot(n, directionToLight(vWorld)), 0.0);
+  vec3 slide = textureProj(uSlide, vSlideCoord).rgb;  // at (s/q, t/q)
+  outColor = vec4(uColor * 0.85 * nl * slide * spot(), 1.0);
+}
