@@ -1,0 +1,233 @@
+// Lesson 05: percentage-closer filtering, dithered (seed 000 "Hardware Shadow Map Filtering"
+// .. "Advice for Shadowed Illumination Model (2)"; seed 001 "Soft Shadows" .. its dithered
+// PCF shader; seed 003 slide 71).
+//
+// A shadow-map texel says lit or shadowed, nothing in between; its edges are blocky. Depths
+// cannot be blended (0.25 and 0.63 average to 0.44, a depth where nothing is), so PCF compares
+// first and averages the results: the fraction of a neighbourhood that is lit. Modes:
+//   none      one tap, lesson 04's hard shadow
+//   hw2x2     one tap through a GL_LINEAR compare sampler: the texture unit does 4 compares
+//   grid      N x N taps over +-radius texels, up to 8 x 8 = 64 (001's "64 samples")
+//   dithered  001's 4 taps whose pattern alternates with gl_FragCoord mod 2
+//   poisson   taps on a Poisson disk of that radius (003)
+// The shadow term goes into 000's illumination model with dimming (common/shaders/lighting.glsl).
+// Work that cannot change the result is skipped and counted: fragments facing away from the
+// light take no taps, and a kernel whose 4 probe taps agree stops there.
+#include <imgui.h>
+
+#include <cmath>
+
+#include "app.hpp"
+#include "json.hpp"
+#include "pcf_math.hpp"
+#include "shadow_map.hpp"
+
+namespace shadows {
+
+class PcfDithered final : public Lesson {
+ public:
+  std::string title() const override { return "PCF: compare, then average; 4 dithered taps vs 64"; }
+  std::string seeds() const override {
+    return "seed 000: Hardware Shadow Map Filtering .. Advice for Shadowed Illumination Model "
+           "(2); 001: Soft Shadows .. PCF with Dithering; 003: slide 71";
+  }
+  std::vector<std::string> debugViews() const override { return {"taps", "light_depth"}; }
+
+  void declare(Params& p) override {
+    ShadowMap::declare(p);
+    p.setDefaultFloat(p.at("shadow.fit"), 1.0);  // lesson 03's fit, as in lesson 04
+    p.addFloat("dimming", 0.4f, 0.0f, 1.0f, "diffuse left in shadow: dimming + (1-dimming)*shade");
+    p.addChoice("pcf.mode", {"none", "hw2x2", "grid", "dithered", "poisson"}, "dithered",
+                "how the shadow term is filtered");
+    p.addFloat("pcf.radius", 2.0f, 0.0f, 16.0f, "kernel half-width in texels (001's swidth x 2)");
+    p.addInt("pcf.taps", 16, 1, 64, "grid: up to N x N of this; poisson: this many");
+    p.addBool("pcf.early_out", true, "stop after 4 probe taps that agree");
+    p.addBool("pcf.count", true, "count taps per fragment (its atomics cost the eye pass ~10%)");
+    // Lesson 04's default bias: back faces into the map, plus glPolygonOffset(factor, units).
+    p.addFloat("bias.factor", 1.1f, 0.0f, 20.0f, "glPolygonOffset factor", kDirtyShadowMap);
+    p.addFloat("bias.units", 4.0f, 0.0f, 1e7f, "glPolygonOffset units", kDirtyShadowMap)
+        .logarithmic = true;
+  }
+
+  void init() override {
+    depth_program_ =
+        Program(lessonFile(LESSON_DIR, "depth.vert"), lessonFile(LESSON_DIR, "depth.frag"));
+    eye_program_ =
+        Program(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
+    // Two compare samplers for the same map: nearest (one texel per tap), linear (hw2x2).
+    for (GLuint* s : {&nearest_, &linear_}) {
+      glGenSamplers(1, s);
+      const GLint filter = s == &linear_ ? GL_LINEAR : GL_NEAREST;
+      glSamplerParameteri(*s, GL_TEXTURE_MIN_FILTER, filter);
+      glSamplerParameteri(*s, GL_TEXTURE_MAG_FILTER, filter);
+      glSamplerParameteri(*s, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+      glSamplerParameteri(*s, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+      glSamplerParameteri(*s, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+      glSamplerParameteri(*s, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+      const float border[4] = {1, 1, 1, 1};  // outside the map: nothing in front
+      glSamplerParameterfv(*s, GL_TEXTURE_BORDER_COLOR, border);
+    }
+    GLuint buffer = 0;
+    glGenBuffers(1, &buffer);
+    counters_ = GlName<deleteBuffer>(buffer);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(counts_), nullptr, GL_DYNAMIC_READ);
+  }
+  ~PcfDithered() override {
+    for (GLuint s : {nearest_, linear_}) {
+      if (s != 0) glDeleteSamplers(1, &s);
+    }
+  }
+
+  void render(Frame& f) override {
+    Params& p = f.params;
+    if (map_.prepare(f)) {  // lesson 04's default bias
+      auto timing = f.measure.pass("shadow");
+      map_.beginRender();
+      glEnable(GL_CULL_FACE);
+      glCullFace(GL_FRONT);
+      glEnable(GL_POLYGON_OFFSET_FILL);
+      glPolygonOffset(p.at("bias.factor").f(), p.at("bias.units").f());
+      const glm::mat4 light_view_projection = map_.lightViewProjection();
+      depth_program_.set("uLightViewProjection", light_view_projection);
+      f.drawObjects(depth_program_, Objects::Casters, &light_view_projection);
+      glDisable(GL_POLYGON_OFFSET_FILL);
+      glDisable(GL_CULL_FACE);
+      glCullFace(GL_BACK);
+    }
+    const std::string mode = p.at("pcf.mode").choice();
+    const float radius = p.at("pcf.radius").f();
+    const int grid = pcf::gridSide(p.at("pcf.taps").i());
+    // The area light the truth uses: the one whose penumbra this kernel's blur matches.
+    kernel_texels_ = mode == "none"                ? 0.0f
+                     : mode == "hw2x2"             ? 0.5f  // a tent over 2 texels
+                     : mode == "grid" && grid == 1 ? 0.0f
+                                                   : radius;
+    f.truth_area_radius = matchAreaLight(f, kernel_texels_);
+    if (f.mode == "light_depth") {
+      f.bindTarget();
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      map_.drawInset(f, /*fullscreen=*/true);
+      return;
+    }
+
+    const bool counting = p.at("pcf.count").b() && f.measure.enabled();
+    const GLuint zero[4] = {0, 0, 0, 0};
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counters_.id());
+    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(zero), zero);
+    {
+      auto timing = f.measure.pass("eye");
+      f.bindTarget();
+      glClearColor(0.55f, 0.62f, 0.72f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      map_.texture().bind(0);
+      const bool linear = mode == "hw2x2" || p.at("shadow.filter").is("linear");
+      glBindSampler(0, linear ? linear_ : nearest_);
+      const Program& e = eye_program_;
+      e.set("uViewProjection", f.projection * f.view);
+      e.set("uShadowMatrix", map_.textureMatrix());  // B * P_light * V_light
+      e.set("uShadowMap", 0);
+      e.set("uView", f.mode == "visibility" ? 1 : f.mode == "taps" ? 2 : 0);
+      e.set("uPcfMode", mode == "none"       ? 0
+                        : mode == "hw2x2"    ? 1
+                        : mode == "grid"     ? 2
+                        : mode == "dithered" ? 3
+                                             : 4);
+      e.set("uRadius", radius);
+      e.set("uGridSide", grid);
+      e.set("uPoissonTaps", p.at("pcf.taps").i());
+      e.set("uEarlyOut", p.at("pcf.early_out").b() ? 1 : 0);
+      e.set("uCount", counting ? 1 : 0);
+      e.set("uTexel", glm::vec2(1.0f / static_cast<float>(map_.width()),
+                                1.0f / static_cast<float>(map_.height())));
+      f.setLightingUniforms(e, p.at("dimming").f());
+      f.drawObjects(e, Objects::All);
+      glBindSampler(0, 0);
+    }
+    if (counting) {  // not during the runner's own truth renders
+      glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+      glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(counts_), counts_);
+      f.measure.count("pcf_taps", counts_[0]);
+      f.measure.count("pcf_filtered_fragments", counts_[1]);
+      f.measure.count("pcf_stopped_early", counts_[2]);
+      f.measure.count("pcf_skipped_facing_away", counts_[3]);
+    }
+    if (f.mode != "visibility") map_.drawInset(f);
+  }
+
+  void panel(Frame& f) override {
+    Params& p = f.params;
+    auto preset = [&](const char* label, const char* mode, int taps) {
+      if (ImGui::Button(label)) {
+        p.setChoice(p.at("pcf.mode"), mode);
+        p.setFloat(p.at("pcf.taps"), taps);
+      }
+    };
+    preset("64 taps", "grid", 64);
+    ImGui::SameLine();
+    preset("4 dithered", "dithered", 16);
+    ImGui::SameLine();
+    preset("hw 2x2", "hw2x2", 16);
+    ImGui::SameLine();
+    preset("none", "none", 16);
+    // Cost and error side by side.
+    const double per_fragment =
+        counts_[1] > 0 ? static_cast<double>(counts_[0]) / static_cast<double>(counts_[1]) : 0.0;
+    const auto pass = f.measure.medianPassMs();
+    const double eye_ms = pass.count("eye") ? pass.at("eye") : 0.0;
+    ImGui::Text("cost:  %5.2f taps/fragment, eye pass %.2f ms", per_fragment, eye_ms);
+    ImGui::Text("       skipped: %u facing away, %u after 4 probes", counts_[3], counts_[2]);
+    const ErrorState& error = f.runner.lastError();
+    if (error.valid) {
+      ImGui::Text("error: vis_mae %.4f vs an area light r=%.3f", error.metrics.vis_mae,
+                  area_radius_);
+    }
+  }
+
+  void report(JsonWriter& json) const override {
+    json.value("kernel_half_width_texels", kernel_texels_);
+    json.value("truth_area_radius", area_radius_);
+    json.value("match_occluder_distance", d_occluder_);
+    json.value("match_receiver_distance", d_receiver_);
+    json.value("match_texel_world", texel_world_);
+    json.value("taps_per_filtered_fragment",
+               counts_[1] > 0 ? static_cast<double>(counts_[0]) / counts_[1] : 0.0);
+  }
+
+ private:
+  // The kernel's penumbra matched where it matters most (pcf::areaLightRadius): the ray from
+  // the light through the casters' centre, and the receiver the casters rest on (their
+  // lowest point) further along it. The texel size is taken at that receiver.
+  float matchAreaLight(const Frame& f, float kernelTexels) {
+    const Bounds casters = f.scene.bounds(/*castersOnly=*/true);
+    const LightFrustum& fr = map_.frustum();
+    const glm::vec3 light = f.light.position, centre = casters.center();
+    const glm::vec3 ray = f.light.directional || glm::distance(centre, light) < 1e-4f
+                              ? f.light.direction
+                              : glm::normalize(centre - light);
+    d_occluder_ = glm::dot(centre - light, ray);
+    const float down = -ray.y;  // how fast the ray descends toward the floor
+    const float gap = down > 0.05f ? (centre.y - casters.min.y) / down : casters.radius();
+    d_receiver_ = d_occluder_ + gap;
+    const float rows = static_cast<float>(map_.height());
+    // Depth along the light's axis (a receiver behind a spot light gets no shadow anyway).
+    const float axial = std::max(glm::dot(ray * d_receiver_, f.light.direction), fr.near);
+    texel_world_ =
+        fr.directional
+            ? 2.0f * fr.extent / rows
+            : 2.0f * std::tan(glm::radians(std::clamp(fr.fov, 1.0f, 170.0f)) * 0.5f) * axial / rows;
+    area_radius_ = pcf::areaLightRadius(kernelTexels, texel_world_, d_occluder_, d_receiver_);
+    return area_radius_;
+  }
+
+  ShadowMap map_;
+  Program depth_program_, eye_program_;
+  GLuint nearest_ = 0, linear_ = 0;
+  GlName<deleteBuffer> counters_;
+  GLuint counts_[4] = {0, 0, 0, 0};  // taps, filtered, stopped early, facing away
+  float kernel_texels_ = 0, area_radius_ = 0, d_occluder_ = 0, d_receiver_ = 0, texel_world_ = 0;
+};
+
+SHADOWS_LESSON(PcfDithered);
+
+}  // namespace shadows

@@ -1,0 +1,57 @@
+#version 430 core
+// Pass 2: the shadow term by percentage-closer filtering, into 000's illumination model with
+// dimming. Taps are counted per fragment into a buffer: llvmpipe's statistics count fragment
+// invocations, not texture lookups.
+layout(early_fragment_tests) in;  // count only fragments that passed the depth test
+#include "lighting.glsl"
+#include "pcf.glsl"
+
+in vec3 vWorld;
+in vec3 vNormal;
+in vec4 vShadowCoord;
+uniform vec3 uColor;
+uniform int uView;   // 0 shaded, 1 visibility, 2 taps per fragment
+uniform int uCount;  // 1: add this fragment's work to the counters (atomics cost a little)
+out vec4 outColor;
+layout(std430, binding = 0) buffer Counters {
+  uint taps;         // shadow-map lookups
+  uint filtered;     // fragments that ran the filter
+  uint stopped;      // ... of which stopped after the probes
+  uint facing_away;  // fragments that skipped it: facing away from the light
+};
+
+float shadowTerm(vec3 n, vec3 toLight) {
+  // Facing away from the light (the geometric normal, as the truth sees it): in its own
+  // shadow, whatever the map says. No taps.
+  if (dot(n, toLight) <= 0.0) {
+    if (uCount == 1) atomicAdd(facing_away, 1u);
+    return 0.0;
+  }
+  vec4 c = vShadowCoord;
+  if (c.w <= 0.0) return 1.0;  // behind a spot light: outside its frustum
+  vec3 p = c.xyz / c.w;
+  p.z = min(p.z, 1.0);  // beyond the far plane: every depth format clamps B to 1
+  float shade = percentageCloser(p);
+  if (uCount == 1) {
+    atomicAdd(taps, uint(gTaps));
+    atomicAdd(filtered, 1u);
+    if (gStopped) atomicAdd(stopped, 1u);
+  }
+  return shade;
+}
+
+void main() {
+  vec3 n = normalize(cross(dFdx(vWorld), dFdy(vWorld)));  // geometric, facing the eye
+  float shade = shadowTerm(n, directionToLight(vWorld));
+  if (uView == 0) {
+    outColor = vec4(shadeSurface(uColor, vWorld, normalize(vNormal), shade), 1.0);
+  } else if (uView == 1) {
+    outColor = vec4(vec3(shade), 1.0);
+  } else {
+    // Taps per fragment: black 0, blue 4, through green, to red at 64.
+    float t = clamp(log2(float(gTaps) + 1.0) / log2(65.0), 0.0, 1.0);
+    vec3 heat = t < 0.5 ? mix(vec3(0.0, 0.1, 0.8), vec3(0.1, 0.8, 0.2), 2.0 * t)
+                        : mix(vec3(0.1, 0.8, 0.2), vec3(0.95, 0.1, 0.05), 2.0 * t - 1.0);
+    outColor = vec4(gTaps == 0 ? vec3(0.0) : heat * (0.5 + 0.5 * shade), 1.0);
+  }
+}

@@ -1,0 +1,354 @@
+// Lesson 05 end to end, headless: the hardware's 2x2 compare filter on seed 000's example,
+// every mode and view, the taps each kernel takes and the ones it skips (counted, not timed),
+// the area light the truth uses, and cost against error for 4 dithered taps and 64.
+#include "harness.hpp"
+
+#include "json.hpp"
+
+#include <filesystem>
+#include <fstream>
+
+namespace shadows {
+namespace {
+
+using testing::fractionDiffering;
+using testing::meanAbsDifference;
+using testing::startLesson;
+
+const std::string kLesson = "05_pcf_dithered";
+
+std::string label(const std::vector<std::string>& sets) {
+  std::string text;
+  for (const auto& s : sets) text += s + " ";
+  return text;
+}
+
+double reportNumber(Runner& runner, const std::string& key) {
+  JsonWriter json;
+  runner.writeReport(json);
+  const auto at = json.str().find("\"" + key + "\": ");
+  EXPECT_NE(at, std::string::npos) << key;
+  return at == std::string::npos ? 0.0 : std::stod(json.str().substr(at + key.size() + 4));
+}
+
+long long counter(Runner& runner, const std::string& name) {
+  const auto& counts = runner.measure().lastFrameCounts();
+  const auto it = counts.find(name);
+  EXPECT_NE(it, counts.end()) << name;
+  return it == counts.end() ? -1 : it->second;
+}
+
+TEST(Lesson05, SnapshotMatchesTheGolden) {
+  // Defaults (4 dithered taps over +-2 texels, dimming 0.4) on a 256² map, so the penumbrae
+  // and their dither pattern cover enough pixels to matter. Tolerance as for lesson 03
+  // (tests/test_lesson03.cpp); a hard edge or a lost dimming changes more than 2% of pixels.
+  auto runner = startLesson(kLesson, {"shadow.size=256"});
+  runner->renderFrame();
+  const Image image = runner->readImage();
+  const std::string golden_path = std::string(SHADOWS_GOLDEN_DIR) + "/05_pcf_dithered.png";
+  if (std::getenv("UPDATE_GOLDEN") != nullptr) {
+    ASSERT_TRUE(writePng(golden_path, image));
+    GTEST_SKIP() << "golden written to " << golden_path << ": look at it before committing";
+  }
+  const Image golden = readPng(golden_path);
+  EXPECT_LE(fractionDiffering(image, golden, 24), 0.02);
+  EXPECT_LT(meanAbsDifference(image, golden), 2.0);
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
+TEST(Lesson05, LinearCompareOfTheSeed2x2MapIsHalfLitWhereTheAveragedDepthShadows) {
+  // Seed 000 on the texture unit: a 2x2 depth map (0.25 0.63 / 0.25 0.63), looked up between
+  // the four texel centres with reference depth 0.57. Through a GL_LINEAR compare sampler the
+  // unit compares each texel, then blends: 0.5. Through a plain GL_LINEAR sampler it blends
+  // the depths, 0.44, and 0.57 > 0.44 would put the pixel wrongly in shadow.
+  auto runner = startLesson(kLesson, {}, 16, 16);  // for its GL context
+  const auto dir = std::filesystem::temp_directory_path() / "shadows_test_lesson05";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "probe.vert") << "#version 330 core\n"
+                                       "void main() {\n"
+                                       "  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);\n"
+                                       "  gl_Position = vec4(2.0 * p - 1.0, 0.0, 1.0);\n"
+                                       "}\n";
+  std::ofstream(dir / "probe.frag") << "#version 330 core\n"
+                                       "uniform sampler2DShadow uCompared;\n"
+                                       "uniform sampler2D uBlended;\n"
+                                       "uniform vec3 uCoord;\n"
+                                       "out vec4 outColor;\n"
+                                       "void main() {\n"
+                                       "  outColor = vec4(texture(uCompared, uCoord),\n"
+                                       "                  texture(uBlended, uCoord.xy).r, 0, 1);\n"
+                                       "}\n";
+  const Program probe(dir / "probe.vert", dir / "probe.frag");
+  const Texture target = Texture::color(1, 1, GL_RGBA32F);
+  Framebuffer framebuffer;
+  framebuffer.attachColor(target);
+  framebuffer.check();
+  const Texture map = Texture::depth(2, 2, 32);
+  const float depths[4] = {0.25f, 0.63f, 0.25f, 0.63f};  // rows bottom-up
+  map.bind(0);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 2, 2, GL_DEPTH_COMPONENT, GL_FLOAT, depths);
+  map.bind(1);
+  GLuint samplers[2];
+  glGenSamplers(2, samplers);
+  for (GLuint s : samplers) {
+    glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(s, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(s, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  glSamplerParameteri(samplers[0], GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glSamplerParameteri(samplers[0], GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glSamplerParameteri(samplers[1], GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  glBindSampler(0, samplers[0]);
+  glBindSampler(1, samplers[1]);
+  framebuffer.bind();
+  glViewport(0, 0, 1, 1);
+  glDisable(GL_DEPTH_TEST);
+  GLuint vao = 0;
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  probe.use();
+  probe.set("uCompared", 0);
+  probe.set("uBlended", 1);
+  probe.set("uCoord", glm::vec3(0.5f, 0.5f, 0.57f));  // between the four texel centres
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  float pixel[4] = {-1, -1, -1, -1};
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, pixel);
+  EXPECT_NEAR(pixel[0], 0.5f, 0.02f) << "percentage closer: half the texels are in front";
+  EXPECT_NEAR(pixel[1], 0.44f, 0.01f) << "the blended depth";
+  EXPECT_GT(0.57f, pixel[1]) << "so comparing against it says shadowed";
+  // Three quarters of the way toward the 0.63 column: 75% lit.
+  probe.set("uCoord", glm::vec3(0.625f, 0.5f, 0.57f));
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, pixel);
+  EXPECT_NEAR(pixel[0], 0.75f, 0.02f);
+  glBindSampler(0, 0);
+  glBindSampler(1, 0);
+  glDeleteSamplers(2, samplers);
+  glDeleteVertexArrays(1, &vao);
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
+TEST(Lesson05, EveryModeAndViewRendersWithoutGlErrorsOrNonFiniteValues) {
+  auto runner = startLesson(kLesson, {"pcf.taps=64"}, 160, 120);
+  for (const std::string& mode : runner->params().at("pcf.mode").choices) {
+    ASSERT_EQ(runner->params().set("pcf.mode", mode), "");
+    std::vector<std::vector<std::uint8_t>> pictures;
+    for (const std::string& view : runner->params().at("view").choices) {
+      ASSERT_EQ(runner->params().set("view", view), "");
+      runner->renderFrame();
+      EXPECT_EQ(runner->glErrors(), 0) << mode << " " << view;
+      pictures.push_back(runner->readImage().rgba);
+    }
+    for (size_t i = 0; i < pictures.size(); ++i) {
+      for (size_t j = i + 1; j < pictures.size(); ++j) {
+        EXPECT_NE(pictures[i], pictures[j]) << mode << ": views " << i << " and " << j;
+      }
+    }
+    ASSERT_EQ(runner->params().set("view", "shaded"), "");
+    EXPECT_EQ(runner->measureError().metrics.nonfinite_pixels, 0) << mode;
+  }
+}
+
+TEST(Lesson05, EachKernelTakesTheTapsItSays) {
+  // Counted in the shader (llvmpipe's statistics count fragments, not lookups). Without the
+  // early out every filtered fragment takes exactly the kernel's taps.
+  struct Case {
+    std::vector<std::string> sets;
+    long long taps_per_fragment;
+  };
+  const Case cases[] = {{{"pcf.mode=none"}, 1},
+                        {{"pcf.mode=hw2x2"}, 1},  // one lookup; the unit reads 4 texels
+                        {{"pcf.mode=dithered"}, 4},
+                        {{"pcf.mode=grid", "pcf.taps=64"}, 64},
+                        {{"pcf.mode=grid", "pcf.taps=20"}, 16},  // the largest square: 4 x 4
+                        {{"pcf.mode=poisson", "pcf.taps=10"}, 10}};
+  for (const Case& c : cases) {
+    std::vector<std::string> sets = c.sets;
+    sets.push_back("pcf.early_out=false");
+    auto runner = startLesson(kLesson, sets, 160, 120);
+    runner->renderFrame();
+    const long long filtered = counter(*runner, "pcf_filtered_fragments");
+    EXPECT_GT(filtered, 5000) << label(sets);
+    EXPECT_EQ(counter(*runner, "pcf_taps"), c.taps_per_fragment * filtered) << label(sets);
+    EXPECT_EQ(counter(*runner, "pcf_stopped_early"), 0) << label(sets);
+    EXPECT_NEAR(reportNumber(*runner, "taps_per_filtered_fragment"),
+                static_cast<double>(c.taps_per_fragment), 1e-9)
+        << label(sets);
+  }
+}
+
+TEST(Lesson05, EarlyOutSkipsMostTapsAndBarelyChangesTheShadow) {
+  // 64 taps: where the 4 corner probes agree (fully lit or fully shadowed), the other 60 are
+  // skipped. Only something smaller than the kernel hiding between the corners could differ.
+  auto run = [](bool early) {
+    auto runner =
+        startLesson(kLesson, {"pcf.mode=grid", "pcf.taps=64",
+                              std::string("pcf.early_out=") + (early ? "true" : "false")});
+    runner->renderFrame();
+    struct Result {
+      long long taps, filtered, stopped;
+      std::vector<float> visibility;
+      double vis_mae;
+    } r{counter(*runner, "pcf_taps"), counter(*runner, "pcf_filtered_fragments"),
+        counter(*runner, "pcf_stopped_early"), runner->renderVisibility(),
+        runner->measureError().metrics.vis_mae};
+    return r;
+  };
+  const auto full = run(false), early = run(true);
+  EXPECT_EQ(early.filtered, full.filtered);
+  EXPECT_GT(early.stopped, early.filtered * 8 / 10) << "most of the picture is not an edge";
+  EXPECT_LT(early.taps * 4, full.taps) << "over 4x fewer taps";
+  EXPECT_EQ(early.taps, 4 * early.stopped + 64 * (early.filtered - early.stopped));
+  size_t changed = 0;
+  for (size_t i = 0; i < full.visibility.size(); ++i) {
+    if (std::abs(full.visibility[i] - early.visibility[i]) > 0.02f) ++changed;
+  }
+  EXPECT_LT(static_cast<double>(changed), 0.002 * static_cast<double>(full.visibility.size()));
+  EXPECT_NEAR(early.vis_mae, full.vis_mae, 0.0003);
+}
+
+TEST(Lesson05, FragmentsFacingAwayFromTheLightTakeNoTaps) {
+  // dueling: the eye looks at the casters' unlit sides. Those fragments are in their own
+  // shadow whatever the map says; the truth does not count them either.
+  auto runner = startLesson(
+      kLesson, {"scene=dueling", "pcf.mode=grid", "pcf.taps=64", "pcf.early_out=false"});
+  runner->renderFrame();
+  const long long away = counter(*runner, "pcf_skipped_facing_away");
+  const long long filtered = counter(*runner, "pcf_filtered_fragments");
+  EXPECT_GT(away, 3000);
+  EXPECT_EQ(counter(*runner, "pcf_taps"), 64 * filtered) << "no taps for the ones facing away";
+  EXPECT_EQ(runner->measureError().metrics.nonfinite_pixels, 0);
+}
+
+TEST(Lesson05, TheTruthIsTheAreaLightTheKernelImitates) {
+  auto radius = [](const std::vector<std::string>& sets) {
+    auto runner = startLesson(kLesson, sets, 160, 120);
+    runner->renderFrame();
+    const ErrorState& e = runner->measureError();
+    const double r = reportNumber(*runner, "truth_area_radius");
+    if (r > 0) {
+      EXPECT_EQ(e.metrics.truth.rfind("area r=", 0), 0u) << label(sets);
+    } else {
+      EXPECT_EQ(e.metrics.truth, "point") << label(sets);
+    }
+    return r;
+  };
+  EXPECT_EQ(radius({"pcf.mode=none"}), 0.0);  // a hard shadow: the point light's truth
+  EXPECT_EQ(radius({"pcf.mode=grid", "pcf.taps=1"}), 0.0);
+  const double r2 = radius({"pcf.mode=grid", "pcf.radius=2"});
+  EXPECT_GT(r2, 0.01);
+  EXPECT_LT(r2, 1.0);
+  EXPECT_NEAR(radius({"pcf.mode=grid", "pcf.radius=4"}), 2.0 * r2, 1e-4 * r2);
+  EXPECT_NEAR(radius({"pcf.mode=dithered", "pcf.radius=2"}), r2, 1e-6);
+  // The same kernel in texels of a map twice as fine blurs half as far: half the light.
+  EXPECT_NEAR(radius({"pcf.mode=grid", "pcf.radius=2", "shadow.size=2048"}), 0.5 * r2, 1e-3 * r2);
+  // hw2x2 blends over one texel: the light of a half-texel kernel.
+  EXPECT_NEAR(radius({"pcf.mode=hw2x2"}), 0.25 * r2, 1e-4 * r2);
+}
+
+TEST(Lesson05, SixtyFourTapsAreCloserToTheTruthThanFourDitheredAndCostSixteenTimesTheTaps) {
+  // The comparison of seed 001's "Comparison" slides, measured: same radius, so the same
+  // area-light truth; early out off so the cost is the kernel's own.
+  for (const std::string& scene : scenePresets()) {
+    auto run = [&](const std::vector<std::string>& mode) {
+      std::vector<std::string> sets = {"scene=" + scene, "pcf.radius=3", "pcf.early_out=false"};
+      sets.insert(sets.end(), mode.begin(), mode.end());
+      if (scene == "cubes") sets.push_back("camera.pos=-4,5,7");
+      auto runner = startLesson(kLesson, sets);
+      runner->renderFrame();
+      return std::make_pair(runner->measureError().metrics, counter(*runner, "pcf_taps"));
+    };
+    const auto [grid, grid_taps] = run({"pcf.mode=grid", "pcf.taps=64"});
+    const auto [dithered, dithered_taps] = run({"pcf.mode=dithered"});
+    EXPECT_EQ(grid.truth, dithered.truth) << scene;
+    EXPECT_LT(grid.vis_mae, dithered.vis_mae) << scene;
+    EXPECT_EQ(grid_taps, 16 * dithered_taps) << scene;
+  }
+}
+
+TEST(Lesson05, LessonFourBiasKeepsAcneAwayOnEveryPreset) {
+  // The bias is lesson 04's default (back faces + glPolygonOffset(1.1, 4.0)): with no filter
+  // the shadow is lesson 04's, within its bounds; the kernels must not bring acne back.
+  for (const std::string& scene : scenePresets()) {
+    for (const std::string mode : {"none", "grid", "poisson"}) {
+      std::vector<std::string> sets = {"scene=" + scene, "shadow.size=2048", "pcf.mode=" + mode,
+                                       "pcf.taps=64", "pcf.radius=4"};
+      if (scene == "cubes") sets.push_back("camera.pos=-4,5,7");
+      auto runner = startLesson(kLesson, sets);
+      runner->renderFrame();
+      const ErrorMetrics& e = runner->measureError().metrics;
+      EXPECT_LE(e.false_shadow_pct, 0.2) << label(sets);
+      EXPECT_LE(e.false_lit_pct, 1.0) << label(sets);
+    }
+  }
+}
+
+TEST(Lesson05, StaticFrameRendersNoMapAndFilterChangesDoNotEither) {
+  auto runner = startLesson(kLesson, {});
+  runner->renderFrame();
+  EXPECT_EQ(counter(*runner, "shadow_map_renders"), 1);
+  runner->renderFrame();
+  EXPECT_EQ(counter(*runner, "shadow_map_renders"), 0);
+  for (const std::string set :
+       {"pcf.mode=grid", "pcf.radius=5", "pcf.taps=9", "dimming=0.1", "pcf.early_out=false"}) {
+    ASSERT_EQ(runner->params().assign(set), "");
+    runner->renderFrame();
+    EXPECT_EQ(counter(*runner, "shadow_map_renders"), 0) << set;
+  }
+  ASSERT_EQ(runner->params().assign("bias.factor=2"), "");
+  runner->renderFrame();
+  EXPECT_EQ(counter(*runner, "shadow_map_renders"), 1);
+}
+
+TEST(Lesson05, DimmingLeavesDiffuseLightInShadow) {
+  // Seed 000: diffuseShade = dimming + (1 - dimming) * shade. With dimming 1 the shadow is
+  // gone from the diffuse term (specular still needs light); with 0 it is black but ambient.
+  auto mean = [](const std::string& dimming) {
+    auto runner = startLesson(kLesson, {"dimming=" + dimming, "inset=false"});
+    runner->renderFrame();
+    const Image image = runner->readImage();
+    double sum = 0;
+    for (size_t i = 0; i < image.rgba.size(); i += 4) sum += image.rgba[i] + image.rgba[i + 1];
+    return sum / static_cast<double>(image.rgba.size() / 4);
+  };
+  const double none = mean("0"), slide = mean("0.4"), full = mean("1");
+  EXPECT_LT(none, slide);
+  EXPECT_LT(slide, full);
+}
+
+TEST(Lesson05, SliderExtremesStayFiniteAndErrorFree) {
+  std::vector<std::vector<std::string>> extremes = {
+      {"shadow.size=64", "shadow.height=4096", "shadow.format=16"},
+      {"shadow.size=4096", "shadow.format=32f", "shadow.filter=linear"},
+      {"light.near=0.001", "light.far=1000", "shadow.fit=false"},
+      {"light.near=100", "light.far=0.01", "shadow.fit=false"},
+      {"light.fov=5"},
+      {"light.fov=160"},
+      {"light.pos=0,0.5,0", "light.target=0,0.5,0"},
+      {"light.pos=-50,0.01,0", "light.target=0,0,0"},
+      {"light.pos=0,50,0", "light.target=0,0,0"},
+      {"light.type=directional", "light.extent=0.5"},
+      {"camera.pos=0,0.6,0", "camera.target=0,0.6,0"},
+      {"dimming=0"},
+      {"dimming=1"},
+      {"bias.factor=0", "bias.units=0"},
+      {"bias.factor=20", "bias.units=10000000"},
+      {"pcf.count=false"}};
+  for (const std::string mode : {"none", "hw2x2", "grid", "dithered", "poisson"}) {
+    extremes.push_back({"pcf.mode=" + mode, "pcf.radius=0", "pcf.taps=1"});
+    extremes.push_back({"pcf.mode=" + mode, "pcf.radius=16", "pcf.taps=64", "shadow.size=64"});
+    extremes.push_back({"pcf.mode=" + mode, "pcf.radius=16", "pcf.taps=64", "light.fov=160",
+                        "light.type=directional", "light.extent=50"});
+  }
+  for (const auto& sets : extremes) {
+    auto runner = startLesson(kLesson, sets, 160, 120);
+    runner->renderFrame();
+    const ErrorMetrics& e = runner->measureError().metrics;
+    EXPECT_EQ(e.nonfinite_pixels, 0) << label(sets);
+    EXPECT_EQ(runner->glErrors(), 0) << label(sets);
+  }
+}
+
+}  // namespace
+}  // namespace shadows

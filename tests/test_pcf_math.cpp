@@ -1,0 +1,106 @@
+// Lesson 05's arithmetic without GL (05_pcf_dithered/pcf_math.hpp mirrors pcf.glsl): seed
+// 000's "Depth Values are not Blend-able" example, the kernels, and the area light a kernel
+// imitates.
+#include "../05_pcf_dithered/pcf_math.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace shadows::pcf {
+namespace {
+
+TEST(PcfMath, AveragingDepthsSaysShadowedWherePercentageCloserSaysHalf) {
+  // Seed 000: texels 0.25, 0.25, 0.63, 0.63; the fragment's depth is 0.57.
+  const std::vector<float> depths = {0.25f, 0.25f, 0.63f, 0.63f};
+  // Average(0.25, 0.25, 0.63, 0.63) = 0.44 and 0.57 > 0.44: "wrongly in shadow", at a depth
+  // where nothing is.
+  EXPECT_EQ(compareAveragedDepth(depths, 0.57f), 0.0f);
+  // Compare first: two texels occlude (0.25 < 0.57), two do not (0.63): 50% lit.
+  EXPECT_FLOAT_EQ(percentageCloser(depths, 0.57f), 0.5f);
+  // The hardware's bilinear weights between the texel centres give the same at the middle.
+  EXPECT_FLOAT_EQ(bilinearPercentageCloser({0.25f, 0.63f, 0.25f, 0.63f}, 0.57f, 0.5f, 0.5f), 0.5f);
+  // ... and move smoothly with the position, where the averaged depth flips all at once.
+  EXPECT_FLOAT_EQ(bilinearPercentageCloser({0.25f, 0.63f, 0.25f, 0.63f}, 0.57f, 0.75f, 0.5f),
+                  0.75f);
+}
+
+TEST(PcfMath, PercentageCloserStaysBetweenAllLitAndAllShadowed) {
+  const std::vector<float> depths = {0.2f, 0.4f, 0.6f, 0.8f};
+  EXPECT_EQ(percentageCloser(depths, 0.1f), 1.0f);  // in front of everything: lit
+  EXPECT_EQ(percentageCloser(depths, 0.9f), 0.0f);  // behind everything: shadowed
+  EXPECT_FLOAT_EQ(percentageCloser(depths, 0.5f), 0.5f);
+}
+
+TEST(PcfMath, GridTapsAreTheMidpointsOfTheKernelBox) {
+  const auto taps = gridOffsets(8, 2.0f);
+  ASSERT_EQ(taps.size(), 64u);
+  float lo = 1e9f, hi = -1e9f;
+  glm::vec2 sum(0.0f);
+  for (const auto& t : taps) {
+    lo = std::min({lo, t.x, t.y});
+    hi = std::max({hi, t.x, t.y});
+    sum += t;
+  }
+  EXPECT_FLOAT_EQ(lo, -1.75f);  // half a step (0.25 of 2 texels) inside the box edge
+  EXPECT_FLOAT_EQ(hi, 1.75f);
+  EXPECT_NEAR(sum.x, 0.0f, 1e-5f);  // centred: no shift of the shadow edge
+  EXPECT_NEAR(sum.y, 0.0f, 1e-5f);
+  EXPECT_EQ(gridOffsets(1, 5.0f)[0], glm::vec2(0.0f));
+}
+
+TEST(PcfMath, TheFourDitheredPatternsOfA2x2BlockAreThe16TapGrid) {
+  // Seed 001: each pixel takes 4 taps chosen by gl_FragCoord mod 2; a 2x2 block of pixels
+  // together covers the 4x4 grid of the same radius once each, which is why 4 dithered taps
+  // look like 16 from a step back.
+  std::vector<glm::vec2> dithered;
+  for (int y = 0; y < 2; ++y) {
+    for (int x = 0; x < 2; ++x) {
+      for (const auto& t : ditheredOffsets(x, y, 3.0f)) dithered.push_back(t);
+    }
+  }
+  std::vector<glm::vec2> grid = gridOffsets(4, 3.0f);
+  auto order = [](const glm::vec2& a, const glm::vec2& b) {
+    return a.x < b.x || (a.x == b.x && a.y < b.y);
+  };
+  std::sort(dithered.begin(), dithered.end(), order);
+  std::sort(grid.begin(), grid.end(), order);
+  ASSERT_EQ(dithered.size(), grid.size());
+  for (size_t i = 0; i < grid.size(); ++i) {
+    EXPECT_FLOAT_EQ(dithered[i].x, grid[i].x) << i;
+    EXPECT_FLOAT_EQ(dithered[i].y, grid[i].y) << i;
+  }
+  // The pattern depends on the pixel only through its parity.
+  EXPECT_EQ(ditheredOffsets(3, 5, 3.0f), ditheredOffsets(1, 1, 3.0f));
+}
+
+TEST(PcfMath, GridSideIsTheLargestSquareInTheTapBudget) {
+  EXPECT_EQ(gridSide(1), 1);
+  EXPECT_EQ(gridSide(3), 1);
+  EXPECT_EQ(gridSide(4), 2);
+  EXPECT_EQ(gridSide(16), 4);
+  EXPECT_EQ(gridSide(63), 7);
+  EXPECT_EQ(gridSide(64), 8);
+  EXPECT_EQ(gridSide(1000), 8);  // 8 x 8 = 64 at most
+  EXPECT_EQ(gridSide(0), 1);
+}
+
+TEST(PcfMath, AreaLightRadiusMatchesThePenumbraWidth) {
+  // Occluder edge at 6, receiver at 8 from the light, texel 0.01 wide at the receiver, kernel
+  // half-width 2 texels: the kernel blurs +-0.02. A disk of radius a gives a penumbra of
+  // half-width a (8 - 6) / 6, so a = 0.06.
+  const float a = areaLightRadius(2.0f, 0.01f, 6.0f, 8.0f);
+  EXPECT_FLOAT_EQ(a, 0.06f);
+  EXPECT_FLOAT_EQ(a * (8.0f - 6.0f) / 6.0f, 2.0f * 0.01f);
+  // Linear in the kernel; a wider gap needs a smaller light for the same blur.
+  EXPECT_FLOAT_EQ(areaLightRadius(4.0f, 0.01f, 6.0f, 8.0f), 2.0f * a);
+  EXPECT_LT(areaLightRadius(2.0f, 0.01f, 6.0f, 12.0f), a);
+  // No kernel, no gap, or nonsense: a point light.
+  EXPECT_EQ(areaLightRadius(0.0f, 0.01f, 6.0f, 8.0f), 0.0f);
+  EXPECT_EQ(areaLightRadius(2.0f, 0.01f, 6.0f, 6.0f), 0.0f);
+  EXPECT_EQ(areaLightRadius(2.0f, 0.01f, 0.0f, 6.0f), 0.0f);
+  EXPECT_EQ(areaLightRadius(2.0f, -0.01f, 6.0f, 8.0f), 0.0f);  // receiver behind the light
+}
+
+}  // namespace
+}  // namespace shadows::pcf
