@@ -27,6 +27,10 @@ class ProjectedPlanar final : public Lesson {
   std::string seeds() const override {
     return "seed 001: Planar Projected Shadows .. Generalized Shadows; seed 003: slides 14-21";
   }
+  // A planar shadow needs only the light's position (or direction): no frustum, no map.
+  std::vector<std::string> unusedSharedParams() const override {
+    return {"light.fov", "light.extent", "light.near", "light.far"};
+  }
   std::vector<std::string> debugViews() const override {
     return {"overdraw"};  // how many shadow triangles land on each pixel
   }

@@ -60,6 +60,10 @@ class ProjectiveTexture final : public Lesson {
   std::string seeds() const override {
     return "seed 004: projective texturing, reverse projection; seed 000: back-projection fixes";
   }
+  // The slide lands where (s/q, t/q) falls; the depth r/q, and so near and far, never matter.
+  std::vector<std::string> unusedSharedParams() const override {
+    return {"light.near", "light.far"};
+  }
   std::vector<std::string> debugViews() const override { return {"texcoords", "slide"}; }
 
   void declare(Params& p) override {

@@ -119,7 +119,13 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
     } else if (arg == "--out" || arg == "--report" || arg == "--truth-out" ||
                arg == "--error-out") {
       if (!next(value)) return arg + ": expected a file name";
-      if (!canWrite(value)) return arg + ": cannot write '" + value + "' (no such directory?)";
+      if (!canWrite(value)) {
+        std::error_code ec;
+        return arg + ": cannot write '" + value + "' (" +
+               (std::filesystem::is_directory(value, ec) ? "it is a directory"
+                                                         : "no such directory, or read-only") +
+               ")";
+      }
       (arg == "--out"         ? o.out
        : arg == "--report"    ? o.report
        : arg == "--truth-out" ? o.truth_out
@@ -301,21 +307,31 @@ Runner::~Runner() {
 }
 
 void Runner::declareShared() {
+  // Sliders a lesson has no use for are not offered at all (a slider that does nothing
+  // misleads), and --set rejects them.
+  Params all;
+  declareSharedInto(all);
+  const auto unused = lesson_->unusedSharedParams();
+  for (const Param& p : all.all()) {
+    if (std::find(unused.begin(), unused.end(), p.name) == unused.end()) params_.add(p);
+  }
+}
+
+void Runner::declareSharedInto(Params& params) {
   constexpr std::uint32_t kLight = kDirtyShadowMap;
-  params_.addChoice("light.type", {"spot", "directional"}, "spot",
-                    "spot: perspective frustum; directional: orthographic", kLight);
-  params_.addVec3("light.pos", {3, 6, 4}, -50, 50, "light position", kLight);
-  params_.addVec3("light.target", {0, 0, 0}, -50, 50, "where the light points", kLight);
-  params_.addFloat("light.fov", 60, 5, 160, "spot light field of view, degrees", kLight);
-  params_.addFloat("light.extent", 10, 0.5f, 50, "directional: half width of the light box",
-                   kLight);
-  params_.addFloat("light.near", 1, 0.001f, 100, "light frustum near plane", kLight).logarithmic =
+  params.addChoice("light.type", {"spot", "directional"}, "spot",
+                   "spot: perspective frustum; directional: orthographic", kLight);
+  params.addVec3("light.pos", {3, 6, 4}, -50, 50, "light position", kLight);
+  params.addVec3("light.target", {0, 0, 0}, -50, 50, "where the light points", kLight);
+  params.addFloat("light.fov", 60, 5, 160, "spot light field of view, degrees", kLight);
+  params.addFloat("light.extent", 10, 0.5f, 50, "directional: half width of the light box", kLight);
+  params.addFloat("light.near", 1, 0.001f, 100, "light frustum near plane", kLight).logarithmic =
       true;
-  params_.addFloat("light.far", 20, 0.01f, 1000, "light frustum far plane", kLight).logarithmic =
+  params.addFloat("light.far", 20, 0.01f, 1000, "light frustum far plane", kLight).logarithmic =
       true;
-  params_.addVec3("camera.pos", {0, 4, 8}, -100, 100, "eye position (drag in the window)");
-  params_.addVec3("camera.target", {0, 0, 0}, -100, 100, "what the eye looks at");
-  params_.addFloat("camera.fov", 45, 10, 120, "eye vertical field of view, degrees");
+  params.addVec3("camera.pos", {0, 4, 8}, -100, 100, "eye position (drag in the window)");
+  params.addVec3("camera.target", {0, 0, 0}, -100, 100, "what the eye looks at");
+  params.addFloat("camera.fov", 45, 10, 120, "eye vertical field of view, degrees");
 }
 
 void Runner::loadScene() {
@@ -324,10 +340,13 @@ void Runner::loadScene() {
   params_.setDefaultChoice(params_.at("light.type"), l.directional ? "directional" : "spot");
   params_.setDefaultVec3(params_.at("light.pos"), l.position);
   params_.setDefaultVec3(params_.at("light.target"), l.target);
-  params_.setDefaultFloat(params_.at("light.fov"), l.fov);
-  params_.setDefaultFloat(params_.at("light.extent"), l.extent);
-  params_.setDefaultFloat(params_.at("light.near"), l.near);
-  params_.setDefaultFloat(params_.at("light.far"), l.far);
+  const std::pair<const char*, float> frustum[] = {{"light.fov", l.fov},
+                                                   {"light.extent", l.extent},
+                                                   {"light.near", l.near},
+                                                   {"light.far", l.far}};
+  for (const auto& [name, value] : frustum) {
+    if (Param* p = params_.find(name)) params_.setDefaultFloat(*p, value);
+  }
   params_.setDefaultVec3(params_.at("camera.pos"), scene_.camera.position);
   params_.setDefaultVec3(params_.at("camera.target"), scene_.camera.target);
   params_.setDefaultFloat(params_.at("camera.fov"), scene_.camera.fov);
@@ -354,6 +373,15 @@ std::string Runner::applySets(const std::vector<std::string>& sets) {
   return {};
 }
 
+std::string Runner::checkConsistency() const {
+  const Param* near = params_.find("light.near");
+  const Param* far = params_.find("light.far");
+  if (near != nullptr && far != nullptr && near->f() >= far->f()) {
+    return "light.near (" + near->text() + ") must be less than light.far (" + far->text() + ")";
+  }
+  return {};
+}
+
 Light Runner::currentLight() const {
   const Params& p = params_;
   Light l;
@@ -362,10 +390,15 @@ Light Runner::currentLight() const {
   l.target = p.at("light.target").v();
   const glm::vec3 d = l.target - l.position;
   l.direction = glm::dot(d, d) > 1e-12f ? glm::normalize(d) : glm::vec3(0, -1, 0);
-  l.fov = p.at("light.fov").f();
-  l.extent = p.at("light.extent").f();
-  l.near = p.at("light.near").f();
-  l.far = p.at("light.far").f();
+  // A lesson that does not offer a frustum slider gets the scene preset's value.
+  auto value = [&](const char* name, float preset) {
+    const Param* param = p.find(name);
+    return param != nullptr ? param->f() : preset;
+  };
+  l.fov = value("light.fov", scene_.light.fov);
+  l.extent = value("light.extent", scene_.light.extent);
+  l.near = value("light.near", scene_.light.near);
+  l.far = value("light.far", scene_.light.far);
   l.view = lookAtSafe(l.position, l.target);
   return l;
 }
@@ -737,7 +770,13 @@ int Runner::run() {
     if (!options_.headless) std::printf("%s: no display, rendering headless\n", name_.c_str());
     return runHeadless();
   }
-  return runWindow();
+  const int result = runWindow();
+  if (result != kNoWindow) return result;
+  if (options_.force_window) return 1;
+  // A DISPLAY that leads nowhere (a closed ssh tunnel, a stale variable): say so, go on.
+  std::printf("%s: cannot open a window on DISPLAY=%s, rendering headless\n", name_.c_str(),
+              has_display ? display : "");
+  return runHeadless();
 }
 
 int Runner::runHeadless() {
@@ -749,7 +788,10 @@ int Runner::runHeadless() {
   measure_->clearHistory();
   for (int i = 0; i < options_.frames; ++i) renderFrame();
   const Image image = readImage();
-  if (options_.truth) measureError();
+  // Asking for the truth or error picture asks for the truth, --no-truth or not.
+  if (options_.truth || !options_.truth_out.empty() || !options_.error_out.empty()) {
+    measureError();
+  }
   if (!writePng(out, image)) {
     std::fprintf(stderr, "%s: cannot write %s\n", name_.c_str(), out.c_str());
     return 1;
@@ -759,13 +801,18 @@ int Runner::runHeadless() {
   if (!options_.report.empty()) {
     JsonWriter json;
     writeReport(json);
-    const std::string temporary = options_.report + ".partial";
-    std::ofstream(temporary) << json.str() << "\n";
-    std::filesystem::rename(temporary, options_.report);
+    if (!writeOutputFile(options_.report, json.str() + "\n")) {
+      std::fprintf(stderr, "%s: cannot write %s\n", name_.c_str(), options_.report.c_str());
+      return 1;
+    }
   }
   const int errors = glErrors();
   std::printf("%-28s %dx%d  frame %7.2f ms", out.c_str(), options_.width, options_.height,
               measure_->medianFrameMs());
+  const auto& counts = measure_->lastFrameCounts();
+  if (const auto it = counts.find("shadow_map_renders"); it != counts.end() && it->second == 0) {
+    std::printf(" (map cached)");
+  }
   if (error_.valid) {
     std::printf("  false shadow %6.2f%%  false lit %5.2f%%", error_.metrics.false_shadow_pct,
                 error_.metrics.false_lit_pct);
@@ -780,10 +827,9 @@ int Runner::runHeadless() {
 }
 
 int Runner::runWindow() {
-  if (!glfwInit()) {
-    std::fprintf(stderr, "%s: GLFW cannot start (no display?); try --headless\n", name_.c_str());
-    return 1;
-  }
+  glfwSetErrorCallback(
+      [](int, const char* description) { std::fprintf(stderr, "GLFW: %s\n", description); });
+  if (!glfwInit()) return kNoWindow;
   window_ = true;
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
@@ -792,8 +838,10 @@ int Runner::runWindow() {
   GLFWwindow* window = glfwCreateWindow(
       options_.width, options_.height, (name_ + ": " + lesson_->title()).c_str(), nullptr, nullptr);
   if (window == nullptr) {
-    std::fprintf(stderr, "%s: cannot open a 4.5 core window; try --headless\n", name_.c_str());
-    return 1;
+    std::fprintf(stderr, "%s: cannot open a 4.5 core window\n", name_.c_str());
+    glfwTerminate();
+    window_ = false;
+    return kNoWindow;
   }
   glfwMakeContextCurrent(window);
   glfwSwapInterval(1);
@@ -893,6 +941,10 @@ int runLessonMain(int argc, char** argv) {
   try {
     Runner runner(lessons[0], makeLesson(lessons[0]), options);
     if (std::string e = runner.applySets(options.sets); !e.empty()) {
+      std::fprintf(stderr, "%s: %s\n", lessons[0].c_str(), e.c_str());
+      return 2;
+    }
+    if (std::string e = runner.checkConsistency(); !e.empty()) {
       std::fprintf(stderr, "%s: %s\n", lessons[0].c_str(), e.c_str());
       return 2;
     }

@@ -83,6 +83,9 @@ class Lesson {
   virtual void render(Frame& frame) = 0;     // draw frame.mode into frame.target
   virtual void panel(Frame&) {}              // extra ImGui lines under the sliders
   virtual void report(JsonWriter&) const {}  // extra report fields (what the lesson derived)
+  // Shared parameters (light.fov, light.near, ...) this lesson has no use for: the runner
+  // does not offer them.
+  virtual std::vector<std::string> unusedSharedParams() const { return {}; }
   // A path next to the lesson's main.cpp, fixed at build time (never the working directory).
   static std::filesystem::path lessonFile(const std::string& lessonDir, const std::string& file) {
     return std::filesystem::path(lessonDir) / file;
@@ -151,6 +154,8 @@ class Runner {
   int glErrors() const;
   void writeReport(JsonWriter& json);
 
+  // "" or one line on parameters that parse alone but not together (near >= far).
+  std::string checkConsistency() const;
   // Runs the whole program (window or headless) and returns the exit code.
   int run();
 
@@ -168,6 +173,7 @@ class Runner {
  private:
   struct Gpu;
   void declareShared();
+  static void declareSharedInto(Params& params);
   void initGl();  // the runner's GL resources and the lesson's, once a context is current
   void loadScene();
   Light currentLight() const;
@@ -177,6 +183,7 @@ class Runner {
                   bool withPanel);
   void drawPanel(Frame& frame);
   void showImage(const Image& image, GLuint target, int width, int height);
+  static constexpr int kNoWindow = -1;  // runWindow could not open one
   int runWindow();
   int runHeadless();
 

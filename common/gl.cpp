@@ -334,8 +334,10 @@ int g_error_count = 0;
 int g_count_at_last_poll = 0;
 std::string g_last_error;
 
-void GLAPIENTRY onDebugMessage(GLenum, GLenum type, GLuint, GLenum severity, GLsizei,
+void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint, GLenum severity, GLsizei,
                                const GLchar* message, const void*) {
+  // A shader that does not compile is reported once, by Program, with file:line.
+  if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
   if (type == GL_DEBUG_TYPE_ERROR) {
     ++g_error_count;
     g_last_error = message;

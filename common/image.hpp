@@ -15,9 +15,13 @@ struct Image {
 // Writes atomically (temporary file, then rename) so a failure leaves no half file.
 // Returns false on failure.
 bool writePng(const std::string& path, const Image& image);
+// The same for any output: a new or regular file is replaced atomically; anything else that
+// exists (/dev/null, a pipe) is written in place, never replaced.
+bool writeOutputFile(const std::string& path, const std::string& bytes);
 // Throws std::runtime_error naming the file when it is missing or not an image.
 Image readPng(const std::string& path);
-// True when `path` could be created: its directory exists and is writable.
+// True when `path` can be written: an existing non-directory we may write to, or a new file
+// in a directory that exists and is writable.
 bool canWrite(const std::string& path);
 
 }  // namespace shadows

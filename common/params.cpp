@@ -25,7 +25,10 @@ std::string number(double v) {
 }
 
 bool parseNumber(const std::string& text, double& out) {
-  if (text.empty()) return false;
+  // Plain decimal only: strtod would also take hex ("0x1"), "inf" and "nan".
+  if (text.empty() || text.find_first_not_of("0123456789+-.eE") != std::string::npos) {
+    return false;
+  }
   errno = 0;
   char* end = nullptr;
   out = std::strtod(text.c_str(), &end);
@@ -81,6 +84,22 @@ bool inRange(const Param& p, double v) {
 }
 
 }  // namespace
+
+// Levenshtein distance, for "did you mean".
+size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
 
 std::string Param::text() const {
   switch (kind) {
@@ -184,7 +203,13 @@ std::string Params::set(const std::string& name, const std::string& text) {
   if (p == nullptr) {
     std::string names;
     for (const auto& q : params_) names += (names.empty() ? "" : ", ") + q.name;
-    return "unknown parameter '" + name + "'; parameters are: " + names;
+    std::string guess;
+    size_t best = 4;  // more than 3 edits away is not a typo
+    for (const auto& q : params_) {
+      if (const size_t d = editDistance(name, q.name); d < best) best = d, guess = q.name;
+    }
+    return "unknown parameter '" + name + "'" +
+           (guess.empty() ? "" : "; did you mean '" + guess + "'?") + " Parameters: " + names;
   }
   const std::string bad = name + ": '" + text + "' is not allowed; expected " + allowed(*p);
   double parsed[3] = {0, 0, 0};
@@ -276,6 +301,17 @@ void Params::setChoice(Param& p, const std::string& choiceName) {
   const auto it = std::find(p.choices.begin(), p.choices.end(), choiceName);
   if (it == p.choices.end()) throw std::logic_error(p.name + ": no choice " + choiceName);
   setFloat(p, static_cast<double>(it - p.choices.begin()));
+}
+
+void Params::resetToDefaults() {
+  for (auto& p : params_) {
+    if (!std::equal(std::begin(p.value), std::end(p.value), std::begin(p.fallback)) ||
+        p.string_value != p.string_fallback) {
+      std::copy(std::begin(p.fallback), std::end(p.fallback), std::begin(p.value));
+      p.string_value = p.string_fallback;
+      changed(p);
+    }
+  }
 }
 
 void Params::setDefaultVec3(Param& p, glm::vec3 v) {

@@ -76,6 +76,8 @@ class Params {
   Param& addString(const std::string& name, const std::string& def, const std::string& help,
                    std::uint32_t affects = kDirtyView);
 
+  // Adds a parameter declared elsewhere (the runner's shared ones), default included.
+  Param& add(Param p);
   Param* find(const std::string& name);
   const Param* find(const std::string& name) const;
   Param& at(const std::string& name);  // throws std::out_of_range naming the parameter
@@ -91,6 +93,8 @@ class Params {
   void setFloat(Param& p, double v);
   void setVec3(Param& p, glm::vec3 v);
   void setChoice(Param& p, const std::string& choiceName);
+  // Every parameter back to its default (the preset's, where a preset set one).
+  void resetToDefaults();
   // A preset changes a default too, so "reset" goes back to the preset's value.
   void setDefaultVec3(Param& p, glm::vec3 v);
   void setDefaultFloat(Param& p, double v);
@@ -112,7 +116,6 @@ class Params {
   }
 
  private:
-  Param& add(Param p);
   void changed(Param& p) { dirty_ |= p.affects; }
   std::deque<Param> params_;  // deque: references stay valid as params are added
   // String widgets: the text being typed (applied on Enter) and the last refusal.

@@ -4,12 +4,14 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -20,8 +22,9 @@ struct Result {
   std::string output;  // stdout and stderr
 };
 
-Result run(const std::string& lesson, const std::string& args) {
-  const std::string command = std::string(SHADOWS_BINARY_DIR) + "/" + lesson + " " + args + " 2>&1";
+Result run(const std::string& lesson, const std::string& args, const std::string& env = {}) {
+  const std::string command =
+      env + std::string(SHADOWS_BINARY_DIR) + "/" + lesson + " " + args + " 2>&1";
   Result result;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -68,6 +71,22 @@ TEST_F(Cli, HeadlessRunWritesPictureAndReportWithTimingsCountersAndError) {
   EXPECT_FALSE(fs::exists(out + ".partial"));
 }
 
+TEST_F(Cli, OutputsToDevNullLeaveItADevice) {
+  const Result r = run(kLesson,
+                       "--headless --size 64x48 --frames 1 --out /dev/null --report "
+                       "/dev/null --error-out /dev/null");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::is_character_file("/dev/null")) << "the run replaced /dev/null with a file";
+}
+
+TEST_F(Cli, ADisplayThatLeadsNowhereFallsBackToHeadless) {
+  const auto out = (dir / "x.png").string();
+  const Result r = run(kLesson, "--size 64x48 --frames 1 --no-truth --out " + out, "DISPLAY=:97 ");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("rendering headless"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(out));
+}
+
 TEST_F(Cli, ListParamsListsEverySlider) {
   const Result r = run(kLesson, "--list-params");
   ASSERT_EQ(r.exit_code, 0);
@@ -107,5 +126,59 @@ INSTANTIATE_TEST_SUITE_P(
                       "--frames 0", "--frames -3", "--backend vulkan",
                       "--out /nonexistent/dir/x.png", "--report /nonexistent/r.json",
                       "--error-out /proc/none/e.png", "--truth-out"));
+
+std::vector<std::string> allLessons() {
+  std::vector<std::string> names;
+  std::stringstream list(SHADOWS_LESSON_NAMES);
+  for (std::string name; std::getline(list, name, ',');) names.push_back(name);
+  return names;
+}
+
+// The contract holds for every lesson binary, not just 03.
+class EveryLessonCli : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryLessonCli, BadInputExitsTwoWithOneLineAndWritesNothing) {
+  const std::string lesson = GetParam();
+  const auto dir = fs::temp_directory_path() / ("shadows_cli_all_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string out = (dir / "x.png").string();
+  for (const std::string bad :
+       {"--bogus", "--set no.such.param=1", "--set view=nope", "--set scene=moon", "--size 0x10",
+        "--frames 0", "--set camera.pos=1,2", "--out /nonexistent/x.png",
+        "--set light.pos=1,2,3,4"}) {
+    const Result r = run(lesson, "--headless --size 64x48 " + bad + " --out " + out);
+    EXPECT_EQ(r.exit_code, 2) << lesson << " " << bad << "\n" << r.output;
+    EXPECT_TRUE(fs::is_empty(dir)) << lesson << " " << bad;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  }
+  // Each parameter parses alone; together near >= far is no frustum.
+  const Result listed = run(lesson, "--list-params");
+  if (listed.output.find("light.near") != std::string::npos) {
+    const Result r = run(lesson, "--headless --set light.near=5 --set light.far=1 --out " + out);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("must be less than light.far"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::is_empty(dir));
+  }
+  fs::remove_all(dir);
+}
+
+TEST_P(EveryLessonCli, DefaultHeadlessRunSucceedsWithAReport) {
+  const std::string lesson = GetParam();
+  const auto dir = fs::temp_directory_path() / ("shadows_cli_ok_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const Result r =
+      run(lesson, "--headless --size 96x72 --frames 1 --out " + (dir / "x.png").string() +
+                      " --report " + (dir / "r.json").string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "x.png"));
+  EXPECT_TRUE(fs::exists(dir / "r.json"));
+  fs::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Lessons, EveryLessonCli, ::testing::ValuesIn(allLessons()),
+                         [](const ::testing::TestParamInfo<std::string>& lesson) {
+                           return lesson.param;
+                         });
 
 }  // namespace

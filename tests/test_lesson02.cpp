@@ -277,8 +277,6 @@ TEST(Lesson02, SliderExtremesStayFiniteAndErrorFree) {
       {"light.pos=-0.9,1.07,0.2"},                    // inside the torus's tube
       {"light.type=directional", "light.extent=0.5", "falloff=0.5"},
       {"light.type=directional", "fix.behind=clip", "fix.q_test=false"},
-      {"light.near=0.001", "light.far=1000"},
-      {"light.near=100", "light.far=0.01"},
       {"fix.q_test=false", "fix.behind=off", "view=texcoords"},
       {"view=slide", "scene=cubes"},
       {"camera.pos=0,0.6,0", "camera.target=0,0.6,0"}};

@@ -45,7 +45,8 @@ TEST_F(ParamsTest, BadValuesNameTheParameterAndWhatIsAllowedAndChangeNothing) {
       {"shadow.size", "1024.5", "integer"},   {"shadow.size", "abc", "integer"},
       {"shadow.size", "", "integer"},         {"dimming", "nan", "[0, 1]"},
       {"dimming", "inf", "[0, 1]"},           {"dimming", "1.5", "[0, 1]"},
-      {"dimming", "0.5x", "[0, 1]"},          {"inset", "maybe", "true or false"},
+      {"dimming", "0.5x", "[0, 1]"},          {"dimming", "0x1", "[0, 1]"},
+      {"dimming", " 0.5", "[0, 1]"},          {"inset", "maybe", "true or false"},
       {"light.pos", "1,2", "x,y,z"},          {"light.pos", "1,2,3,4", "x,y,z"},
       {"light.pos", "1,2,", "x,y,z"},         {"light.pos", "1,,3", "x,y,z"},
       {"light.pos", "1,2,99", "[-50, 50]"},   {"shadow.format", "8", "16, 24, 32f"},
@@ -65,7 +66,10 @@ TEST_F(ParamsTest, BadValuesNameTheParameterAndWhatIsAllowedAndChangeNothing) {
 TEST_F(ParamsTest, UnknownNamesAndMalformedAssignmentsAreRejected) {
   const std::string error = params.set("shadow.sise", "1");
   EXPECT_NE(error.find("unknown parameter 'shadow.sise'"), std::string::npos);
-  EXPECT_NE(error.find("shadow.size"), std::string::npos) << "lists what exists";
+  EXPECT_NE(error.find("did you mean 'shadow.size'?"), std::string::npos) << error;
+  EXPECT_EQ(params.set("zzzzzzzzzz", "1").find("did you mean"), std::string::npos)
+      << "no guess when nothing is close";
+  EXPECT_NE(error.find("inset"), std::string::npos) << "lists what exists";
   EXPECT_NE(params.assign("novalue"), "");
   EXPECT_NE(params.assign("=3"), "");
 }
@@ -102,6 +106,21 @@ TEST_F(ParamsTest, ListAndReportCarryEveryParameter) {
   EXPECT_NE(list.find("[64, 4096]"), std::string::npos);
   EXPECT_NE(list.find("16, 24, 32f"), std::string::npos);
   EXPECT_NE(list.find("map size"), std::string::npos) << "help text is listed";
+}
+
+TEST_F(ParamsTest, ResetToDefaultsRestoresEveryValueAndMarksOnlyWhatChanged) {
+  ASSERT_EQ(params.set("dimming", "0.9"), "");
+  ASSERT_EQ(params.set("shadow.format", "16"), "");
+  params.consume(kDirtyAll);
+  params.resetToDefaults();
+  EXPECT_FLOAT_EQ(params.at("dimming").f(), 0.4f);
+  EXPECT_TRUE(params.at("shadow.format").is("24"));
+  EXPECT_TRUE(params.consume(kDirtyResources)) << "the format changed back";
+  EXPECT_FALSE(params.consume(kDirtyShadowMap)) << "nothing that affects the map moved";
+  params.setDefaultFloat(params.at("dimming"), 0.7);  // a preset's default
+  params.setFloat(params.at("dimming"), 0.1);
+  params.resetToDefaults();
+  EXPECT_FLOAT_EQ(params.at("dimming").f(), 0.7f);
 }
 
 TEST_F(ParamsTest, DeclaringTwiceIsAProgrammingError) {
