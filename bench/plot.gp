@@ -43,9 +43,10 @@ set xrange [xmin:xmax]
 set grid xtics ytics mxtics mytics lc rgb "#dddddd", lc rgb "#eeeeee"
 set format x "%g"
 set format y "%g"
-# Labelled tics at 1, 2 and 5 of every decade, not only at the decades.
+# Labelled tics at 1, 2 and 5 of every decade, not only at the decades; a knob that spans
+# many decades (xcol 9, e.g. a bias) gets one label per decade, or they would overlap.
 do for [e = -6:6] {
-  set xtics add (2 * 10.0 ** e, 5 * 10.0 ** e)
+  if (xcol != 9) { set xtics add (2 * 10.0 ** e, 5 * 10.0 ** e) }
   set ytics add (2 * 10.0 ** e, 5 * 10.0 ** e)
 }
 set xlabel xlabel . ", log scale"

@@ -42,10 +42,24 @@ namespace {
 
 // ---- Sweep definitions ---------------------------------------------------------------------
 
+// A value is either plain (the setting is name=value) or a bundle "label:a=1 b=2" that sets
+// several parameters at once, for knobs that only make sense together (a PCF mode and its
+// tap count); the label names the point in the CSV and on the plot.
 struct Axis {
   std::string name;
   std::vector<std::string> values;
 };
+
+// The label of a value and the --set assignments it stands for.
+std::pair<std::string, std::vector<std::string>> settingsOf(const Axis& axis,
+                                                           const std::string& value) {
+  const auto colon = value.find(':');
+  if (colon == std::string::npos) return {value, {axis.name + "=" + value}};
+  std::vector<std::string> sets;
+  std::istringstream words(value.substr(colon + 1));
+  for (std::string w; words >> w;) sets.push_back(w);
+  return {value.substr(0, colon), sets};
+}
 
 // scenes x axes. axes[0] is the knob that runs along each plotted series (it also varies fastest,
 // so the points of one series are measured back to back); the other axes pick the series.
@@ -56,6 +70,9 @@ struct Sweep {
   // The error metrics plotted against time, one row of panels each: any of vis_mae,
   // false_shadow_pct, false_lit_pct, shade_mae.
   std::vector<std::string> plot_metrics = {"vis_mae"};
+  // Plot against axes[0]'s (numeric) value instead of time, for knobs that cost nothing
+  // (a bias): there the question is how error moves with the knob.
+  bool plot_along = false;
 };
 
 // One entry per lesson. Adding a lesson's sweep is one entry here, e.g. for 04:
@@ -73,6 +90,33 @@ const std::map<std::string, Sweep>& sweeps() {
         // Split by failure mode: with no bias, acne (false shadow) does not depend on the map
         // at all, while aliasing at shadow edges (false lit) falls with its size.
         .plot_metrics = {"false_shadow_pct", "false_lit_pct"}}},
+      {"04_bias_offset",
+       // Bias costs nothing: the plot is about error, along the constant bias from none to
+       // far too much (acne falls, then peter panning rises), one series per method.
+       {.scenes = {"torus_pyramid", "grazing"},
+        .axes = {{"bias.units", {"0", "1", "4", "64", "1000", "10000", "100000", "1000000"}},
+                 {"bias.mode",
+                  {"constant_only", "polygon_offset", "clip_translate", "back_faces",
+                   "normal_offset"}},
+                 {"bias.factor", {"1.1", "2"}}},
+        .fixed = {"shadow.size=2048", "shadow.cache=false", "inset=false"},
+        .plot_metrics = {"false_shadow_pct", "false_lit_pct"},
+        .plot_along = true}},
+      {"05_pcf_dithered",
+       // Along a series, kernels from cheapest to dearest, so the plot shows where 001's
+       // 4-tap dither sits against 64 taps. All points of a series share the radius and the
+       // map size, hence the same area-light truth ("none" and hw2x2 have their own and are
+       // left out); early_out=false shows what skipping settled neighbourhoods saves.
+       {.scenes = {"torus_pyramid", "dueling"},
+        .axes = {{"kernel",
+                  {"dithered4:pcf.mode=dithered", "grid4:pcf.mode=grid pcf.taps=4",
+                   "poisson16:pcf.mode=poisson pcf.taps=16", "grid16:pcf.mode=grid pcf.taps=16",
+                   "poisson64:pcf.mode=poisson pcf.taps=64", "grid64:pcf.mode=grid pcf.taps=64",
+                   "grid64_all_taps:pcf.mode=grid pcf.taps=64 pcf.early_out=false"}},
+                 {"pcf.radius", {"1", "2", "4"}},
+                 {"shadow.size", {"1024", "2048"}}},
+        .fixed = {"shadow.cache=false", "inset=false", "pcf.count=false"},
+        .plot_metrics = {"vis_mae", "false_lit_pct"}}},
   };
   return table;
 }
@@ -137,15 +181,20 @@ std::vector<Config> expand(const std::string& lesson, const Sweep& sweep, const 
     Config c{lesson, scene, {}, {}, index, {"scene=" + scene}};
     for (size_t a = 0; a < axes.size(); ++a) {
       c.axis_names.push_back(axes[a].name);
-      c.values.push_back(axes[a].values[index[a]]);
-      c.sets.push_back(axes[a].name + "=" + c.values.back());
+      const auto [label, sets] = settingsOf(axes[a], axes[a].values[index[a]]);
+      c.values.push_back(label);
+      c.sets.insert(c.sets.end(), sets.begin(), sets.end());
     }
     c.sets.insert(c.sets.end(), sweep.fixed.begin(), sweep.fixed.end());
     // The index into the full (unthinned) axis, so the plot's series keep their identity.
     for (size_t a = 0; a < axes.size(); ++a) {
       const auto& full = sweep.axes[a].values;
-      c.value_index[a] =
-          static_cast<size_t>(std::find(full.begin(), full.end(), c.values[a]) - full.begin());
+      c.value_index[a] = static_cast<size_t>(
+          std::find_if(full.begin(), full.end(),
+                       [&](const std::string& v) {
+                         return settingsOf(sweep.axes[a], v).first == c.values[a];
+                       }) -
+          full.begin());
     }
     return c;
   };
@@ -189,6 +238,9 @@ class Bench {
     Result& result = results_[index];
     try {
       Runner& r = runnerFor(c.lesson);
+      // The runner is reused: start every configuration from the defaults, so a setting one
+      // configuration made (a bundle's pcf.early_out=false, say) does not leak into the next.
+      r.params().resetToDefaults();
       if (std::string e = r.applySets(c.sets); !e.empty()) {
         fail(state, index, "bad sweep value: " + e);
         return;
@@ -540,6 +592,19 @@ std::string writePlotData(const std::filesystem::path& path, const std::string& 
   // Log axes cannot show 0: an error below what one pixel can show is drawn at half a pixel,
   // the floor of what this image size can measure.
   auto floored = [](double v, double half_pixel) { return number(std::max(v, half_pixel)); };
+  // axes[0] as a number for plot_along; 0 is drawn at half the smallest positive value so a
+  // log axis can hold it.
+  double smallest_positive = 1e300;
+  for (const auto& v : sweep.axes[0].values) {
+    const double x = std::strtod(settingsOf(sweep.axes[0], v).first.c_str(), nullptr);
+    if (x > 0) smallest_positive = std::min(smallest_positive, x);
+  }
+  auto alongValue = [&](const std::string& label) {
+    char* end = nullptr;
+    const double x = std::strtod(label.c_str(), &end);
+    if (end == label.c_str() || *end != '\0') return std::string("nan");
+    return number(x > 0 ? x : 0.5 * smallest_positive);
+  };
   std::ostringstream data;
   data << "# " << lesson
        << ": frame_ms cpu_ms frame_min_ms vis_mae false_shadow_pct false_lit_pct shade_mae "
@@ -562,11 +627,12 @@ std::string writePlotData(const std::filesystem::path& path, const std::string& 
         data << time(r.frame_ms) << " " << time(r.cpu_ms) << " " << time(r.frame_min_ms) << " "
              << floored(e.vis_mae, 0.5 * pixel) << " " << floored(e.false_shadow_pct, 50.0 * pixel)
              << " " << floored(e.false_lit_pct, 50.0 * pixel) << " "
-             << floored(e.shade_mae, 0.5 * pixel) << " \"" << c.values[0] << "\"\n";
+             << floored(e.shade_mae, 0.5 * pixel) << " \"" << c.values[0] << "\" "
+             << alongValue(c.values[0]) << "\n";
         any = true;
       }
       // gnuplot does not count a block without records: keep every index in its place.
-      if (!any) data << "nan nan nan nan nan nan nan \"\"\n";
+      if (!any) data << "nan nan nan nan nan nan nan \"\" nan\n";
       data << "\n\n";
       if (any) here += std::to_string(k + 1) + " ";
     }
@@ -604,8 +670,9 @@ std::string writePlotData(const std::filesystem::path& path, const std::string& 
   char size[64];
   std::snprintf(size, sizeof size, "%dx%d, %d round%s x %d frame%s", o.width, o.height, o.rounds,
                 o.rounds == 1 ? "" : "s", o.frames, o.frames == 1 ? "" : "s");
-  const int xcol = o.plot_x == "cpu" ? 2 : o.plot_x == "min" ? 3 : 1;
-  const std::string xlabel = xcol == 2   ? "CPU time per frame, all threads, ms"
+  const int xcol = sweep.plot_along ? 9 : o.plot_x == "cpu" ? 2 : o.plot_x == "min" ? 3 : 1;
+  const std::string xlabel = xcol == 9   ? sweep.axes[0].name + " (0 drawn at the left edge)"
+                             : xcol == 2 ? "CPU time per frame, all threads, ms"
                              : xcol == 3 ? "frame time, ms (fastest frame)"
                                          : "frame time, ms (median)";
   return "data=" + gnuplotString(path.string()) + "; xcol=" + std::to_string(xcol) +
