@@ -1,26 +1,38 @@
 #!/usr/bin/env bash
 # ./run.sh [lesson] [flags]: set up, build, then run a lesson (default 03) in a window;
-# without a display, render every lesson headless into out/<lesson>.png.
+# without a display, render it (or, with no argument at all, every lesson) headless into
+# out/<lesson>.png and out/<lesson>.json.
 set -euo pipefail
 cd "$(dirname "$0")"
-scripts/setup.sh
+# Only the lessons: the tests and the benchmark are test.sh's business.
+scripts/setup.sh --lessons
 
 lessons=()
 for dir in [0-9][0-9]_*/; do
   [[ -x build/${dir%/} ]] && lessons+=("${dir%/}")
 done
 lesson=03_shadow_map_basic
+named=0
 if [[ $# -gt 0 && $1 != -* ]]; then
+  named=1
   for l in "${lessons[@]}"; do [[ $l == "$1"* ]] && lesson=$l && break; done
   [[ $lesson == "$1"* ]] || { echo "run.sh: no lesson '$1'; lessons: ${lessons[*]}"; exit 2; }
   shift
 fi
 
 if [[ -n ${DISPLAY:-} ]]; then
+  # The lesson itself falls back to headless if this DISPLAY leads nowhere.
   exec "build/$lesson" "$@"
 fi
-echo "run.sh: no display, rendering every lesson headless into out/"
 mkdir -p out
-for l in "${lessons[@]}"; do
+# Nothing asked for: every lesson. A lesson or flags asked for: that lesson (default 03).
+if ((named == 0 && $# == 0)); then
+  echo "run.sh: no display, rendering every lesson headless into out/"
+  selected=("${lessons[@]}")
+else
+  echo "run.sh: no display, rendering $lesson headless into out/"
+  selected=("$lesson")
+fi
+for l in "${selected[@]}"; do
   "build/$l" --headless --out "out/$l.png" --report "out/$l.json" "$@"
 done

@@ -807,7 +807,7 @@ int Runner::runHeadless() {
     }
   }
   const int errors = glErrors();
-  std::printf("%-28s %dx%d  frame %7.2f ms", out.c_str(), options_.width, options_.height,
+  std::printf("%-30s %dx%d  frame %7.2f ms", out.c_str(), options_.width, options_.height,
               measure_->medianFrameMs());
   const auto& counts = measure_->lastFrameCounts();
   if (const auto it = counts.find("shadow_map_renders"); it != counts.end() && it->second == 0) {

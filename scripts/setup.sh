@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs what the build needs (Debian packages), then configures and builds into build/.
-# Sourced by run.sh and test.sh so both doors set up the same way.
+# Installs what the build needs (Debian packages), then configures and builds into build/
+# (everything, or with --lessons only the lesson programs). Called by run.sh and test.sh so
+# both doors set up the same way.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -28,5 +29,12 @@ jobs=$(nproc 2>/dev/null || echo 2)
 if [[ ! -f build/CMakeCache.txt ]]; then
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 fi
-echo "setup: building into build/ with $jobs jobs"
-cmake --build build -j"$jobs"
+if [[ ${1:-} == --lessons ]]; then
+  targets=()
+  for dir in [0-9][0-9]_*/; do [[ -f $dir/main.cpp ]] && targets+=(--target "${dir%/}"); done
+  echo "setup: building the lessons into build/ with $jobs jobs"
+  cmake --build build -j"$jobs" "${targets[@]}"
+else
+  echo "setup: building into build/ with $jobs jobs"
+  cmake --build build -j"$jobs"
+fi
