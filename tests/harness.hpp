@@ -49,4 +49,39 @@ inline double meanAbsDifference(const Image& a, const Image& b) {
   return sum / static_cast<double>(a.rgba.size());
 }
 
+// Renders every `view` the lesson offers: no GL error in any, no two alike (each view shows
+// something of its own), and no NaN or Inf in what the lesson draws.
+inline void expectEveryViewCleanAndDistinct(Runner& runner, const std::string& label = {}) {
+  std::vector<std::vector<std::uint8_t>> pictures;
+  const std::vector<std::string> views = runner.params().at("view").choices;
+  for (const std::string& view : views) {
+    ASSERT_EQ(runner.params().set("view", view), "");
+    runner.renderFrame();
+    EXPECT_EQ(runner.glErrors(), 0) << label << " " << view;
+    pictures.push_back(runner.readImage().rgba);
+  }
+  for (size_t i = 0; i < pictures.size(); ++i) {
+    for (size_t j = i + 1; j < pictures.size(); ++j) {
+      EXPECT_NE(pictures[i], pictures[j]) << label << ": " << views[i] << " and " << views[j];
+    }
+  }
+  ASSERT_EQ(runner.params().set("view", "shaded"), "");
+  EXPECT_EQ(runner.measureError().metrics.nonfinite_pixels, 0) << label;
+  EXPECT_EQ(runner.glErrors(), 0) << label;
+}
+
+// Compares `image` with tests/golden/<name>.png; with UPDATE_GOLDEN set, writes it instead
+// and skips (look at it before committing). One tolerance for every lesson, the reasoning in
+// tests/test_lesson03.cpp: at most 2% of pixels off by more than 24 levels, mean under 2.
+inline void expectMatchesGolden(const Image& image, const std::string& name) {
+  const std::string path = std::string(SHADOWS_GOLDEN_DIR) + "/" + name + ".png";
+  if (std::getenv("UPDATE_GOLDEN") != nullptr) {
+    ASSERT_TRUE(writePng(path, image));
+    GTEST_SKIP() << "golden written to " << path << ": look at it before committing";
+  }
+  const Image golden = readPng(path);
+  EXPECT_LE(fractionDiffering(image, golden, 24), 0.02) << name;
+  EXPECT_LT(meanAbsDifference(image, golden), 2.0) << name;
+}
+
 }  // namespace shadows::testing

@@ -90,14 +90,7 @@ TEST(Lesson01, SnapshotMatchesTheGolden) {
   // for another rasterizer moving edge pixels, while a missing shadow (about 6% of this
   // frame), a wrong light or a black frame changes far more.
   const Image image = render({});
-  const std::string golden_path = std::string(SHADOWS_GOLDEN_DIR) + "/01_projected_planar.png";
-  if (std::getenv("UPDATE_GOLDEN") != nullptr) {
-    ASSERT_TRUE(writePng(golden_path, image));
-    GTEST_SKIP() << "golden written to " << golden_path << ": look at it before committing";
-  }
-  const Image golden = readPng(golden_path);
-  EXPECT_LE(fractionDiffering(image, golden, 24), 0.02);
-  EXPECT_LT(meanAbsDifference(image, golden), 2.0);
+  testing::expectMatchesGolden(image, "01_projected_planar");
 }
 
 TEST(Lesson01, SnapshotShowsShadowsDarkenedByExactlyTheDimming) {
@@ -113,19 +106,7 @@ TEST(Lesson01, SnapshotShowsShadowsDarkenedByExactlyTheDimming) {
 
 TEST(Lesson01, EveryViewRendersWithoutGlErrorsOrNonFiniteValues) {
   auto runner = startLesson(kLesson, {});
-  std::vector<std::vector<std::uint8_t>> pictures;
-  for (const std::string& view : runner->params().at("view").choices) {
-    ASSERT_EQ(runner->params().set("view", view), "");
-    runner->renderFrame();
-    EXPECT_EQ(runner->glErrors(), 0) << view;
-    pictures.push_back(runner->readImage().rgba);
-  }
-  EXPECT_EQ(runner->measureError().metrics.nonfinite_pixels, 0);
-  for (size_t i = 0; i < pictures.size(); ++i) {
-    for (size_t j = i + 1; j < pictures.size(); ++j) {
-      EXPECT_NE(pictures[i], pictures[j]) << "views " << i << " and " << j << " are identical";
-    }
-  }
+  testing::expectEveryViewCleanAndDistinct(*runner);
 }
 
 TEST(Lesson01, StencilDarkensEachPixelOnceWithoutItOverlapsBlendTwice) {

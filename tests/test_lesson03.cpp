@@ -25,14 +25,7 @@ TEST(Lesson03, SnapshotMatchesTheGolden) {
   auto runner = startLesson(kLesson, {"shadow.size=1024"});
   runner->renderFrame();
   const Image image = runner->readImage();
-  const std::string golden_path = std::string(SHADOWS_GOLDEN_DIR) + "/03_shadow_map_basic.png";
-  if (std::getenv("UPDATE_GOLDEN") != nullptr) {
-    ASSERT_TRUE(writePng(golden_path, image));
-    GTEST_SKIP() << "golden written to " << golden_path << ": look at it before committing";
-  }
-  const Image golden = readPng(golden_path);
-  EXPECT_LE(fractionDiffering(image, golden, 24), 0.02);
-  EXPECT_LT(meanAbsDifference(image, golden), 2.0);
+  testing::expectMatchesGolden(image, "03_shadow_map_basic");
   EXPECT_EQ(runner->glErrors(), 0);
 }
 
@@ -56,22 +49,7 @@ TEST(Lesson03, SnapshotIsNotBlankAndShowsShadow) {
 
 TEST(Lesson03, EveryViewRendersWithoutGlErrorsOrNonFiniteValues) {
   auto runner = startLesson(kLesson, {});
-  std::vector<std::vector<std::uint8_t>> pictures;
-  for (const std::string& view : runner->params().at("view").choices) {
-    ASSERT_EQ(runner->params().set("view", view), "");
-    runner->renderFrame();
-    EXPECT_EQ(runner->glErrors(), 0) << view;
-    pictures.push_back(runner->readImage().rgba);
-  }
-  const ErrorState& error = runner->measureError();
-  EXPECT_EQ(error.metrics.nonfinite_pixels, 0);
-  EXPECT_EQ(runner->glErrors(), 0);
-  // Each view shows something of its own.
-  for (size_t i = 0; i < pictures.size(); ++i) {
-    for (size_t j = i + 1; j < pictures.size(); ++j) {
-      EXPECT_NE(pictures[i], pictures[j]) << "views " << i << " and " << j << " are identical";
-    }
-  }
+  testing::expectEveryViewCleanAndDistinct(*runner);
 }
 
 TEST(Lesson03, StaticFrameRendersNoShadowMapAndALightMoveRendersOne) {

@@ -45,14 +45,7 @@ TEST(Lesson05, SnapshotMatchesTheGolden) {
   auto runner = startLesson(kLesson, {"shadow.size=256"});
   runner->renderFrame();
   const Image image = runner->readImage();
-  const std::string golden_path = std::string(SHADOWS_GOLDEN_DIR) + "/05_pcf_dithered.png";
-  if (std::getenv("UPDATE_GOLDEN") != nullptr) {
-    ASSERT_TRUE(writePng(golden_path, image));
-    GTEST_SKIP() << "golden written to " << golden_path << ": look at it before committing";
-  }
-  const Image golden = readPng(golden_path);
-  EXPECT_LE(fractionDiffering(image, golden, 24), 0.02);
-  EXPECT_LT(meanAbsDifference(image, golden), 2.0);
+  testing::expectMatchesGolden(image, "05_pcf_dithered");
   EXPECT_EQ(runner->glErrors(), 0);
 }
 
@@ -133,20 +126,7 @@ TEST(Lesson05, EveryModeAndViewRendersWithoutGlErrorsOrNonFiniteValues) {
   auto runner = startLesson(kLesson, {"pcf.taps=64"}, 160, 120);
   for (const std::string& mode : runner->params().at("pcf.mode").choices) {
     ASSERT_EQ(runner->params().set("pcf.mode", mode), "");
-    std::vector<std::vector<std::uint8_t>> pictures;
-    for (const std::string& view : runner->params().at("view").choices) {
-      ASSERT_EQ(runner->params().set("view", view), "");
-      runner->renderFrame();
-      EXPECT_EQ(runner->glErrors(), 0) << mode << " " << view;
-      pictures.push_back(runner->readImage().rgba);
-    }
-    for (size_t i = 0; i < pictures.size(); ++i) {
-      for (size_t j = i + 1; j < pictures.size(); ++j) {
-        EXPECT_NE(pictures[i], pictures[j]) << mode << ": views " << i << " and " << j;
-      }
-    }
-    ASSERT_EQ(runner->params().set("view", "shaded"), "");
-    EXPECT_EQ(runner->measureError().metrics.nonfinite_pixels, 0) << mode;
+    testing::expectEveryViewCleanAndDistinct(*runner, mode);
   }
 }
 
