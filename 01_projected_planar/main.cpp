@@ -67,11 +67,7 @@ class ProjectedPlanar final : public Lesson {
     //    and marks stencil = 1 where it is the visible surface (slide 19).
     {
       auto timing = f.measure.pass("scene");
-      f.bindTarget();
-      const glm::vec3 sky = mode == 0 ? glm::vec3(0.55f, 0.62f, 0.72f) : glm::vec3(0.0f);
-      glClearColor(sky.r, sky.g, sky.b, 1.0f);
-      glClearStencil(0);
-      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+      f.clearTarget(mode == 0 ? Frame::kSky : glm::vec3(0.0f));
       scene_program_.set("uViewProjection", f.projection * f.view);
       scene_program_.set("uMode", mode);
       f.setLightingUniforms(scene_program_, 1.0f);

@@ -37,16 +37,7 @@ class ShadowMapBasic final : public Lesson {
         Program(lessonFile(LESSON_DIR, "depth.vert"), lessonFile(LESSON_DIR, "depth.frag"));
     eye_program_ =
         Program(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
-    // A sampler object reads the same depth texture raw (no compare) for the debug views.
-    glGenSamplers(1, &raw_sampler_);
-    glSamplerParameteri(raw_sampler_, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    glSamplerParameteri(raw_sampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glSamplerParameteri(raw_sampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glSamplerParameteri(raw_sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(raw_sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  }
-  ~ShadowMapBasic() override {
-    if (raw_sampler_ != 0) glDeleteSamplers(1, &raw_sampler_);
+    raw_sampler_ = Sampler::depth(/*compare=*/false);
   }
 
   void render(Frame& f) override {
@@ -59,22 +50,15 @@ class ShadowMapBasic final : public Lesson {
       depth_program_.set("uLightViewProjection", light_view_projection);
       f.drawObjects(depth_program_, Objects::Casters, &light_view_projection);
     }
-    if (f.mode == "light_depth") {  // Kilgard's second view: the depth map itself
-      f.bindTarget();
-      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      map_.drawInset(f, /*fullscreen=*/true);
-      return;
-    }
+    if (map_.drawDepthView(f)) return;  // Kilgard's second view: the depth map itself
 
     // Pass 2 from the eye (or, for Kilgard's first view, from the light): each fragment
     // gets (s, t, r, q) = B * P_light * V_light * M * p and textureProj compares r/q.
     auto timing = f.measure.pass("eye");
-    f.bindTarget();
-    glClearColor(0.55f, 0.62f, 0.72f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    f.clearTarget();
     map_.texture().bind(0);  // as sampler2DShadow
-    map_.texture().bind(1);  // the same texture through raw_sampler_, for the debug views
-    glBindSampler(1, raw_sampler_);
+    map_.texture().bind(1);  // the same texture read raw, for the debug views
+    raw_sampler_.bind(1);
     const bool from_light = f.mode == "light_view";
     eye_program_.set("uViewProjection",
                      from_light ? map_.lightViewProjection() : f.projection * f.view);
@@ -88,7 +72,7 @@ class ShadowMapBasic final : public Lesson {
     f.setLightingUniforms(eye_program_, f.params.at("dimming").f());
     if (from_light) eye_program_.set("uEye", f.light.position);
     f.drawObjects(eye_program_, Objects::All);
-    glBindSampler(1, 0);
+    Sampler::unbind(1);
     if (f.mode != "visibility") map_.drawInset(f);
   }
 
@@ -113,7 +97,7 @@ class ShadowMapBasic final : public Lesson {
 
   ShadowMap map_;
   Program depth_program_, eye_program_;
-  GLuint raw_sampler_ = 0;
+  Sampler raw_sampler_;
 };
 
 SHADOWS_LESSON(ShadowMapBasic);

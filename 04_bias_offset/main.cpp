@@ -60,17 +60,7 @@ class BiasOffset final : public Lesson {
     eye_program_ =
         Program(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
     // The same depth texture read raw (no compare), border 1 like the map: "nothing in front".
-    glGenSamplers(1, &raw_sampler_);
-    glSamplerParameteri(raw_sampler_, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    glSamplerParameteri(raw_sampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glSamplerParameteri(raw_sampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glSamplerParameteri(raw_sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-    glSamplerParameteri(raw_sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-    const float border[4] = {1, 1, 1, 1};
-    glSamplerParameterfv(raw_sampler_, GL_TEXTURE_BORDER_COLOR, border);
-  }
-  ~BiasOffset() override {
-    if (raw_sampler_ != 0) glDeleteSamplers(1, &raw_sampler_);
+    raw_sampler_ = Sampler::depth(/*compare=*/false);
   }
 
   void render(Frame& f) override {
@@ -98,20 +88,13 @@ class BiasOffset final : public Lesson {
       glDisable(GL_CULL_FACE);
       glCullFace(GL_BACK);
     }
-    if (f.mode == "light_depth") {
-      f.bindTarget();
-      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      map_.drawInset(f, /*fullscreen=*/true);
-      return;
-    }
+    if (map_.drawDepthView(f)) return;
 
     auto timing = f.measure.pass("eye");
-    f.bindTarget();
-    glClearColor(0.55f, 0.62f, 0.72f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    f.clearTarget();
     map_.texture().bind(0);  // sampler2DShadow
     map_.texture().bind(1);  // raw, through raw_sampler_
-    glBindSampler(1, raw_sampler_);
+    raw_sampler_.bind(1);
     const Program& e = eye_program_;
     e.set("uViewProjection", f.projection * f.view);
     e.set("uShadowMap", 0);
@@ -125,7 +108,7 @@ class BiasOffset final : public Lesson {
     setReceiverUniforms(e, f);
     f.setLightingUniforms(e, f.params.at("dimming").f());
     f.drawObjects(e, Objects::All);
-    glBindSampler(1, 0);
+    Sampler::unbind(1);
     if (f.mode != "visibility") map_.drawInset(f);
   }
 
@@ -217,7 +200,7 @@ class BiasOffset final : public Lesson {
 
   ShadowMap map_;
   Program depth_program_, eye_program_;
-  GLuint raw_sampler_ = 0;
+  Sampler raw_sampler_;
   float last_step_ = 0, last_clip_offset_ = 0, last_clip_near_ = 0, last_clip_far_ = 0;
   float last_texel_world_ = 0;
 };

@@ -55,30 +55,14 @@ class PcfDithered final : public Lesson {
     eye_program_ =
         Program(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
     // Two compare samplers for the same map: nearest (one texel per tap), linear (hw2x2).
-    for (GLuint* s : {&nearest_, &linear_}) {
-      glGenSamplers(1, s);
-      const GLint filter = s == &linear_ ? GL_LINEAR : GL_NEAREST;
-      glSamplerParameteri(*s, GL_TEXTURE_MIN_FILTER, filter);
-      glSamplerParameteri(*s, GL_TEXTURE_MAG_FILTER, filter);
-      glSamplerParameteri(*s, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-      glSamplerParameteri(*s, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-      glSamplerParameteri(*s, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-      glSamplerParameteri(*s, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-      const float border[4] = {1, 1, 1, 1};  // outside the map: nothing in front
-      glSamplerParameterfv(*s, GL_TEXTURE_BORDER_COLOR, border);
-    }
+    nearest_ = Sampler::depth(/*compare=*/true, GL_NEAREST);
+    linear_ = Sampler::depth(/*compare=*/true, GL_LINEAR);
     GLuint buffer = 0;
     glGenBuffers(1, &buffer);
     counters_ = GlName<deleteBuffer>(buffer);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
     glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(counts_), nullptr, GL_DYNAMIC_READ);
   }
-  ~PcfDithered() override {
-    for (GLuint s : {nearest_, linear_}) {
-      if (s != 0) glDeleteSamplers(1, &s);
-    }
-  }
-
   void render(Frame& f) override {
     Params& p = f.params;
     if (map_.prepare(f)) {  // lesson 04's default bias
@@ -104,12 +88,7 @@ class PcfDithered final : public Lesson {
                      : mode == "grid" && grid == 1 ? 0.0f
                                                    : radius;
     f.truth_area_radius = matchAreaLight(f, kernel_texels_);
-    if (f.mode == "light_depth") {
-      f.bindTarget();
-      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      map_.drawInset(f, /*fullscreen=*/true);
-      return;
-    }
+    if (map_.drawDepthView(f)) return;
 
     const bool counting = p.at("pcf.count").b() && f.measure.enabled();
     const GLuint zero[4] = {0, 0, 0, 0};
@@ -117,12 +96,10 @@ class PcfDithered final : public Lesson {
     glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(zero), zero);
     {
       auto timing = f.measure.pass("eye");
-      f.bindTarget();
-      glClearColor(0.55f, 0.62f, 0.72f, 1.0f);
-      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      f.clearTarget();
       map_.texture().bind(0);
       const bool linear = mode == "hw2x2" || p.at("shadow.filter").is("linear");
-      glBindSampler(0, linear ? linear_ : nearest_);
+      (linear ? linear_ : nearest_).bind(0);
       const Program& e = eye_program_;
       e.set("uViewProjection", f.projection * f.view);
       e.set("uShadowMatrix", map_.textureMatrix());  // B * P_light * V_light
@@ -142,7 +119,7 @@ class PcfDithered final : public Lesson {
                                 1.0f / static_cast<float>(map_.height())));
       f.setLightingUniforms(e, p.at("dimming").f());
       f.drawObjects(e, Objects::All);
-      glBindSampler(0, 0);
+      Sampler::unbind(0);
     }
     if (counting) {  // not during the runner's own truth renders
       glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -222,7 +199,7 @@ class PcfDithered final : public Lesson {
 
   ShadowMap map_;
   Program depth_program_, eye_program_;
-  GLuint nearest_ = 0, linear_ = 0;
+  Sampler nearest_, linear_;
   GlName<deleteBuffer> counters_;
   GLuint counts_[4] = {0, 0, 0, 0};  // taps, filtered, stopped early, facing away
   float kernel_texels_ = 0, area_radius_ = 0, d_occluder_ = 0, d_receiver_ = 0, texel_world_ = 0;

@@ -200,6 +200,14 @@ void Frame::bindTarget() const {
   glViewport(0, 0, width, height);
 }
 
+void Frame::clearTarget(glm::vec3 color) const {
+  bindTarget();
+  glClearColor(color.r, color.g, color.b, 1.0f);
+  glClearStencil(0);
+  glStencilMask(0xFF);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+}
+
 void Frame::drawObjects(const Program& program, Objects which, const glm::mat4* cull) const {
   runner.drawObjects(*this, program, which, cull);
 }

@@ -58,6 +58,9 @@ struct Frame {
   float truth_area_radius = 0.0f;
 
   void bindTarget() const;
+  // Binds the target and clears colour, depth and stencil (to the sky, by default).
+  void clearTarget(glm::vec3 color = kSky) const;
+  static constexpr glm::vec3 kSky{0.55f, 0.62f, 0.72f};
   // Draws objects with `program`, setting uModel and uColor per object. With `cull`, objects
   // whose bounds lie outside that view-projection are skipped and counted as culled.
   void drawObjects(const Program& program, Objects which, const glm::mat4* cull = nullptr) const;

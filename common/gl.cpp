@@ -28,6 +28,25 @@ void deleteProgram(GLuint id) {
 void deleteQuery(GLuint id) {
   glDeleteQueries(1, &id);
 }
+void deleteSampler(GLuint id) {
+  glDeleteSamplers(1, &id);
+}
+
+Sampler Sampler::depth(bool compare, GLenum filter) {
+  Sampler sampler;
+  GLuint id = 0;
+  glGenSamplers(1, &id);
+  sampler.name_ = GlName<deleteSampler>(id);
+  glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
+  glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
+  glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, compare ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
+  glSamplerParameteri(id, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+  glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+  const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  glSamplerParameterfv(id, GL_TEXTURE_BORDER_COLOR, border);
+  return sampler;
+}
 
 Texture Texture::depth(int width, int height, int bits) {
   Texture t;

@@ -55,6 +55,7 @@ void deleteBuffer(GLuint id);
 void deleteVertexArray(GLuint id);
 void deleteProgram(GLuint id);
 void deleteQuery(GLuint id);
+void deleteSampler(GLuint id);
 
 class Texture {
  public:
@@ -75,6 +76,20 @@ class Texture {
  private:
   GlName<deleteTexture> name_;
   int width_ = 0, height_ = 0;
+};
+
+// How a texture unit reads, overriding the texture's own state: one depth texture can be
+// read both with a compare (sampler2DShadow) and raw (sampler2D) from the same shader.
+class Sampler {
+ public:
+  // For depth maps: compare (GL_LEQUAL, the shadow test) or raw, nearest or linear, and
+  // depth 1 ("nothing in front") outside the map.
+  static Sampler depth(bool compare, GLenum filter = GL_NEAREST);
+  void bind(int unit) const { glBindSampler(static_cast<GLuint>(unit), name_.id()); }
+  static void unbind(int unit) { glBindSampler(static_cast<GLuint>(unit), 0); }
+
+ private:
+  GlName<deleteSampler> name_;
 };
 
 class Framebuffer {

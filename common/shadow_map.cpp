@@ -54,6 +54,13 @@ void ShadowMap::beginRender() const {
   glClear(GL_DEPTH_BUFFER_BIT);
 }
 
+bool ShadowMap::drawDepthView(const Frame& frame) const {
+  if (frame.mode != "light_depth") return false;
+  frame.clearTarget(glm::vec3(0.0f));
+  drawInset(frame, /*fullscreen=*/true);
+  return true;
+}
+
 void ShadowMap::drawInset(const Frame& frame, bool fullscreen) const {
   if (!inset_ && !fullscreen) return;
   frame.drawDepthInset(texture_, frustum_.near, frustum_.far, !frustum_.directional, fullscreen);

@@ -19,6 +19,9 @@ class ShadowMap {
   bool prepare(Frame& frame, std::uint32_t extraDirty = kDirtyNothing);
   // Binds the map's framebuffer, sets the viewport and clears the depth.
   void beginRender() const;
+  // Kilgard's "depth buffer from the light's point of view": when frame.mode is
+  // "light_depth", draws the map over the whole target and returns true.
+  bool drawDepthView(const Frame& frame) const;
   // The depth map inset in a corner (or over the whole target), when `inset` is on.
   void drawInset(const Frame& frame, bool fullscreen = false) const;
 
