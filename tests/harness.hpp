@@ -3,6 +3,7 @@
 
 #include "app.hpp"
 #include "image.hpp"
+#include "json.hpp"
 
 #include <gtest/gtest.h>
 
@@ -47,6 +48,33 @@ inline double meanAbsDifference(const Image& a, const Image& b) {
   double sum = 0;
   for (size_t i = 0; i < a.rgba.size(); ++i) sum += std::abs(a.rgba[i] - b.rgba[i]);
   return sum / static_cast<double>(a.rgba.size());
+}
+
+// "a=1 b=2 " for failure messages.
+inline std::string label(const std::vector<std::string>& sets) {
+  std::string text;
+  for (const auto& s : sets) text += s + " ";
+  return text;
+}
+
+// A number from the lesson's --report (as the binary would write it).
+inline double reportNumber(Runner& runner, const std::string& key) {
+  JsonWriter json;
+  runner.writeReport(json);
+  const auto at = json.str().find("\"" + key + "\": ");
+  EXPECT_NE(at, std::string::npos) << key;
+  return at == std::string::npos ? 0.0 : std::stod(json.str().substr(at + key.size() + 4));
+}
+
+// Each settings list, on a fresh lesson: no GL error, no NaN or Inf anywhere it draws.
+inline void expectFiniteAndErrorFree(const std::string& lesson,
+                                     const std::vector<std::vector<std::string>>& settings) {
+  for (const auto& sets : settings) {
+    auto runner = startLesson(lesson, sets, 160, 120);
+    runner->renderFrame();
+    EXPECT_EQ(runner->measureError().metrics.nonfinite_pixels, 0) << label(sets);
+    EXPECT_EQ(runner->glErrors(), 0) << label(sets);
+  }
 }
 
 // Renders every `view` the lesson offers: no GL error in any, no two alike (each view shows

@@ -9,7 +9,6 @@ namespace shadows {
 namespace {
 
 using testing::fractionDiffering;
-using testing::meanAbsDifference;
 using testing::startLesson;
 
 const std::string kLesson = "01_projected_planar";
@@ -270,15 +269,7 @@ TEST(Lesson01, SliderExtremesStayFiniteAndErrorFree) {
       {"scene=cubes", "light.type=spot", "light.pos=0,-0.5,0"},
       {"camera.pos=0,0.6,0", "camera.target=0,0.6,0"},
       {"view=overdraw", "fix.once=false", "fix.receiver=false"}};
-  for (const auto& sets : extremes) {
-    auto runner = startLesson(kLesson, sets, 160, 120);
-    runner->renderFrame();
-    const ErrorMetrics& e = runner->measureError().metrics;
-    std::string label;
-    for (const auto& s : sets) label += s + " ";
-    EXPECT_EQ(e.nonfinite_pixels, 0) << label;
-    EXPECT_EQ(runner->glErrors(), 0) << label;
-  }
+  testing::expectFiniteAndErrorFree(kLesson, extremes);
 }
 
 TEST(Lesson01, PanelDrawsTheNotesWithoutGlErrors) {

@@ -20,7 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::fractionDiffering;
-using testing::meanAbsDifference;
 using testing::startLesson;
 
 const std::string kLesson = "02_projective_texture";
@@ -261,15 +260,7 @@ TEST(Lesson02, SliderExtremesStayFiniteAndErrorFree) {
       {"fix.q_test=false", "fix.behind=off", "view=texcoords"},
       {"view=slide", "scene=cubes"},
       {"camera.pos=0,0.6,0", "camera.target=0,0.6,0"}};
-  for (const auto& sets : extremes) {
-    auto runner = startLesson(kLesson, sets, 160, 120);
-    runner->renderFrame();
-    const ErrorMetrics& e = runner->measureError().metrics;
-    std::string label;
-    for (const auto& s : sets) label += s + " ";
-    EXPECT_EQ(e.nonfinite_pixels, 0) << label;
-    EXPECT_EQ(runner->glErrors(), 0) << label;
-  }
+  testing::expectFiniteAndErrorFree(kLesson, extremes);
 }
 
 TEST(Lesson02, PanelShowsTheImagePathFieldWithoutGlErrors) {

@@ -10,7 +10,7 @@ namespace shadows {
 namespace {
 
 using testing::fractionDiffering;
-using testing::meanAbsDifference;
+using testing::reportNumber;
 using testing::startLesson;
 
 const std::string kLesson = "03_shadow_map_basic";
@@ -83,14 +83,6 @@ TEST(Lesson03, ShadowPassDrawsOnlyCastersInsideTheLightFrustum) {
   runner->renderFrame();
   EXPECT_EQ(runner->measure().lastFrameWork().at("shadow").draw_calls, 1);
   EXPECT_EQ(runner->measure().lastFrameCounts().at("culled_objects"), 2);
-}
-
-double reportNumber(Runner& runner, const std::string& key) {
-  JsonWriter json;
-  runner.writeReport(json);
-  const auto at = json.str().find("\"" + key + "\": ");
-  EXPECT_NE(at, std::string::npos) << key;
-  return at == std::string::npos ? 0.0 : std::stod(json.str().substr(at + key.size() + 4));
 }
 
 TEST(Lesson03, FittingNearFarToCastersTightensTheRangeAndKeepsTheShadows) {
@@ -217,15 +209,7 @@ TEST(Lesson03, SliderExtremesStayFiniteAndErrorFree) {
       {"camera.pos=0,0.6,0", "camera.target=0,0.6,0"},
       {"dimming=0"},
       {"dimming=1"}};
-  for (const auto& sets : extremes) {
-    auto runner = startLesson(kLesson, sets, 160, 120);
-    runner->renderFrame();
-    const ErrorMetrics& e = runner->measureError().metrics;
-    std::string label;
-    for (const auto& s : sets) label += s + " ";
-    EXPECT_EQ(e.nonfinite_pixels, 0) << label;
-    EXPECT_EQ(runner->glErrors(), 0) << label;
-  }
+  testing::expectFiniteAndErrorFree(kLesson, extremes);
 }
 
 }  // namespace

@@ -14,8 +14,8 @@
 namespace shadows {
 namespace {
 
-using testing::fractionDiffering;
-using testing::meanAbsDifference;
+using testing::label;
+using testing::reportNumber;
 using testing::startLesson;
 
 const std::string kLesson = "04_bias_offset";
@@ -25,20 +25,6 @@ ErrorMetrics measure(const std::vector<std::string>& sets, int width = 320, int 
   runner->renderFrame();
   EXPECT_EQ(runner->glErrors(), 0);
   return runner->measureError().metrics;
-}
-
-std::string label(const std::vector<std::string>& sets) {
-  std::string text;
-  for (const auto& s : sets) text += s + " ";
-  return text;
-}
-
-double reportNumber(Runner& runner, const std::string& key) {
-  JsonWriter json;
-  runner.writeReport(json);
-  const auto at = json.str().find("\"" + key + "\": ");
-  EXPECT_NE(at, std::string::npos) << key;
-  return at == std::string::npos ? 0.0 : std::stod(json.str().substr(at + key.size() + 4));
 }
 
 TEST(Lesson04, SnapshotMatchesTheGolden) {
@@ -254,13 +240,7 @@ TEST(Lesson04, SliderExtremesStayFiniteAndErrorFree) {
     extremes.push_back({"bias.mode=" + mode, "shadow.size=64", "shadow.format=32f",
                         "light.type=directional", "bias.factor=20"});
   }
-  for (const auto& sets : extremes) {
-    auto runner = startLesson(kLesson, sets, 160, 120);
-    runner->renderFrame();
-    const ErrorMetrics& e = runner->measureError().metrics;
-    EXPECT_EQ(e.nonfinite_pixels, 0) << label(sets);
-    EXPECT_EQ(runner->glErrors(), 0) << label(sets);
-  }
+  testing::expectFiniteAndErrorFree(kLesson, extremes);
 }
 
 }  // namespace

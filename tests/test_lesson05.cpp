@@ -11,25 +11,11 @@
 namespace shadows {
 namespace {
 
-using testing::fractionDiffering;
-using testing::meanAbsDifference;
+using testing::label;
+using testing::reportNumber;
 using testing::startLesson;
 
 const std::string kLesson = "05_pcf_dithered";
-
-std::string label(const std::vector<std::string>& sets) {
-  std::string text;
-  for (const auto& s : sets) text += s + " ";
-  return text;
-}
-
-double reportNumber(Runner& runner, const std::string& key) {
-  JsonWriter json;
-  runner.writeReport(json);
-  const auto at = json.str().find("\"" + key + "\": ");
-  EXPECT_NE(at, std::string::npos) << key;
-  return at == std::string::npos ? 0.0 : std::stod(json.str().substr(at + key.size() + 4));
-}
 
 long long counter(Runner& runner, const std::string& name) {
   const auto& counts = runner.measure().lastFrameCounts();
@@ -321,13 +307,7 @@ TEST(Lesson05, SliderExtremesStayFiniteAndErrorFree) {
     extremes.push_back({"pcf.mode=" + mode, "pcf.radius=16", "pcf.taps=64", "light.fov=160",
                         "light.type=directional", "light.extent=50"});
   }
-  for (const auto& sets : extremes) {
-    auto runner = startLesson(kLesson, sets, 160, 120);
-    runner->renderFrame();
-    const ErrorMetrics& e = runner->measureError().metrics;
-    EXPECT_EQ(e.nonfinite_pixels, 0) << label(sets);
-    EXPECT_EQ(runner->glErrors(), 0) << label(sets);
-  }
+  testing::expectFiniteAndErrorFree(kLesson, extremes);
 }
 
 }  // namespace
