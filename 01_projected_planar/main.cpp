@@ -129,17 +129,15 @@ class ProjectedPlanar final : public Lesson {
       notes_.push_back("this scene has no receiver plane: nothing to project onto");
       return false;
     }
-    if (f.scene.name != preset_) {  // the preset's floor (a y-up plane), before our tilt
-      preset_ = f.scene.name;
-      preset_model_ = makeScene(preset_).objects[receiver_].model;
-    }
-    const glm::vec3 centre{preset_model_[3]};
+    // The preset's floor (a y-up plane), before our tilt.
+    const glm::mat4& preset_model = f.runner.presetModel(receiver_);
+    const glm::vec3 centre{preset_model[3]};
     const glm::mat4 tilt = glm::rotate(glm::mat4(1.0f), glm::radians(f.params.at("plane.tilt").f()),
                                        glm::vec3(1, 0, 0));
     const glm::vec3 normal{tilt * glm::vec4(0, 1, 0, 0)};
     const glm::mat4 model =
         glm::translate(glm::mat4(1.0f), centre + f.params.at("plane.offset").f() * normal) * tilt *
-        glm::translate(glm::mat4(1.0f), -centre) * preset_model_;
+        glm::translate(glm::mat4(1.0f), -centre) * preset_model;
     f.runner.setObjectModel(receiver_, model);
 
     // P = (A, B, C, D) through the floor's centre; L homogeneous: w = 0 for a direction.
@@ -244,8 +242,6 @@ class ProjectedPlanar final : public Lesson {
 
   Program scene_program_, shadow_program_;
   size_t receiver_ = 0;
-  std::string preset_;
-  glm::mat4 preset_model_{1.0f};
   glm::vec4 plane_{0.0f}, light_{0.0f};
   long long casters_drawn_ = 0;
   std::vector<std::string> notes_;

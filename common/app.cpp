@@ -344,6 +344,8 @@ void Runner::declareSharedInto(Params& params) {
 
 void Runner::loadScene() {
   scene_ = makeScene(params_.at("scene").choice());
+  preset_models_.clear();
+  for (const auto& object : scene_.objects) preset_models_.push_back(object.model);
   const LightSetup& l = scene_.light;
   params_.setDefaultChoice(params_.at("light.type"), l.directional ? "directional" : "spot");
   params_.setDefaultVec3(params_.at("light.pos"), l.position);

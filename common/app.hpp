@@ -170,6 +170,8 @@ class Runner {
   // lesson's draws, the runner's geometry pass and the ray-traced truth, which is rebuilt
   // when the matrix really changed. A scene preset change puts the preset's matrix back.
   void setObjectModel(size_t index, const glm::mat4& model);
+  // The object's matrix as the scene preset placed it, before any setObjectModel.
+  const glm::mat4& presetModel(size_t index) const { return preset_models_.at(index); }
   void drawInset(const Frame& frame, const Texture& depth, float near, float far, bool perspective,
                  bool fullscreen) const;
 
@@ -195,6 +197,7 @@ class Runner {
   RunOptions options_;
   Params params_;
   Scene scene_;
+  std::vector<glm::mat4> preset_models_;
   std::unique_ptr<Measure> measure_;
   std::unique_ptr<Gpu> gpu_;
   std::unique_ptr<Truth> truth_;
