@@ -181,17 +181,9 @@ class BiasOffset final : public Lesson {
   }
 
   void setReceiverUniforms(const Program& e, const Frame& f) {
-    const LightFrustum& fr = map_.frustum();
-    const float rows = static_cast<float>(map_.height());
     // World size of one texel at distance d from the light: a spot's grows with d.
-    const glm::vec2 texel_world =
-        fr.directional
-            ? glm::vec2(0.0f, 2.0f * fr.extent / rows)
-            : glm::vec2(
-                  2.0f * std::tan(glm::radians(std::clamp(fr.fov, 1.0f, 170.0f)) * 0.5f) / rows,
-                  0.0f);
-    last_texel_world_ =
-        texel_world.x * glm::distance(f.light.position, f.light.target) + texel_world.y;
+    const glm::vec2 texel_world = map_.texelFootprint();
+    last_texel_world_ = map_.texelWorldSize(glm::distance(f.light.position, f.light.target));
     e.set("uShadowMatrix", map_.textureMatrix());
     e.set("uLightView", map_.lightView());
     e.set("uTexelWorld", texel_world);

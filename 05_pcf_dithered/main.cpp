@@ -186,13 +186,9 @@ class PcfDithered final : public Lesson {
     const float down = -ray.y;  // how fast the ray descends toward the floor
     const float gap = down > 0.05f ? (centre.y - casters.min.y) / down : casters.radius();
     d_receiver_ = d_occluder_ + gap;
-    const float rows = static_cast<float>(map_.height());
     // Depth along the light's axis (a receiver behind a spot light gets no shadow anyway).
     const float axial = std::max(glm::dot(ray * d_receiver_, f.light.direction), fr.near);
-    texel_world_ =
-        fr.directional
-            ? 2.0f * fr.extent / rows
-            : 2.0f * std::tan(glm::radians(std::clamp(fr.fov, 1.0f, 170.0f)) * 0.5f) * axial / rows;
+    texel_world_ = map_.texelWorldSize(axial);
     area_radius_ = pcf::areaLightRadius(kernelTexels, texel_world_, d_occluder_, d_receiver_);
     return area_radius_;
   }

@@ -1,5 +1,8 @@
 #include "shadow_map.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace shadows {
 
 void ShadowMap::declare(Params& p) {
@@ -52,6 +55,14 @@ void ShadowMap::beginRender() const {
   framebuffer_->bind();
   glViewport(0, 0, width_, height_);
   glClear(GL_DEPTH_BUFFER_BIT);
+}
+
+glm::vec2 ShadowMap::texelFootprint() const {
+  const float rows = static_cast<float>(std::max(height_, 1));
+  if (frustum_.directional) return {0.0f, 2.0f * frustum_.extent / rows};
+  // The same clamp lightProjection applies to the field of view.
+  const float fov = glm::radians(std::clamp(frustum_.fov, 1.0f, 170.0f));
+  return {2.0f * std::tan(0.5f * fov) / rows, 0.0f};
 }
 
 bool ShadowMap::drawDepthView(const Frame& frame) const {

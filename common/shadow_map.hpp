@@ -35,6 +35,14 @@ class ShadowMap {
   // B * P_light * V_light: world space to (s, t, r, q).
   glm::mat4 textureMatrix() const { return shadowTextureMatrix(projection_, view_); }
   GLenum filter() const { return filter_; }
+  // The world size of one texel (along the map's height) at distance d along the light's
+  // axis is x * d + y: a spot's texels grow with distance (x = 2 tan(fov/2) / rows, y = 0),
+  // a directional light's do not (x = 0, y = 2 extent / rows).
+  glm::vec2 texelFootprint() const;
+  float texelWorldSize(float distance) const {
+    const glm::vec2 t = texelFootprint();
+    return t.x * distance + t.y;
+  }
 
  private:
   Texture texture_;
