@@ -91,12 +91,6 @@ class ProjectiveTexture final : public Lesson {
   void init() override {
     program_ =
         Program(lessonFile(LESSON_DIR, "projector.vert"), lessonFile(LESSON_DIR, "projector.frag"));
-    image_program_ =
-        Program(commonShaderDir() / "fullscreen.vert", commonShaderDir() / "image.frag");
-    glGenVertexArrays(1, &empty_vao_);
-  }
-  ~ProjectiveTexture() override {
-    if (empty_vao_ != 0) glDeleteVertexArrays(1, &empty_vao_);
   }
 
   void render(Frame& f) override {
@@ -115,7 +109,7 @@ class ProjectiveTexture final : public Lesson {
     glClearColor(grey, grey, grey * 1.2f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (f.mode == "slide") {
-      drawSlide(f, true);
+      f.drawImageInset(slide_, /*fullscreen=*/true);
       return;
     }
     const int mode = f.mode == "visibility" ? 1 : f.mode == "texcoords" ? 2 : 0;
@@ -140,7 +134,7 @@ class ProjectiveTexture final : public Lesson {
     }
     if (mode == 2) return;
     projectorPass(f, projector_plane);
-    if (mode == 0 && p.at("inset").b()) drawSlide(f, false);
+    if (mode == 0 && p.at("inset").b()) f.drawImageInset(slide_);
   }
 
   void panel(Frame& f) override {
@@ -225,25 +219,9 @@ class ProjectiveTexture final : public Lesson {
   }
 
   // The slide itself, over the whole target or in the bottom-right corner.
-  void drawSlide(const Frame& f, bool fullscreen) const {
-    const int side = std::max(16, std::min(f.width, f.height) / 4);
-    const int wide = std::max(1, side * slide_.width() / slide_.height());  // keep its aspect
-    if (!fullscreen) glViewport(f.width - wide - 8, 8, wide, side);
-    glDisable(GL_DEPTH_TEST);
-    slide_.bind(0);
-    image_program_.use();
-    image_program_.set("uImage", 0);
-    glBindVertexArray(empty_vao_);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    countDrawCall();
-    glEnable(GL_DEPTH_TEST);
-    f.bindTarget();
-  }
-
-  Program program_, image_program_;
+  Program program_;
   Texture slide_;
   std::string loaded_;
-  GLuint empty_vao_ = 0;
   long long skipped_ = 0;
 };
 

@@ -230,6 +230,26 @@ void Frame::drawObject(const Program& program, size_t index) const {
   runner.drawObject(program, index);
 }
 
+void Frame::drawImageInset(const Texture& image, bool fullscreen) const {
+  runner.drawImageInset(*this, image, fullscreen);
+}
+
+void Runner::drawImageInset(const Frame& frame, const Texture& image, bool fullscreen) const {
+  const int side = std::max(16, std::min(frame.width, frame.height) / 4);
+  const int wide = std::max(1, side * image.width() / std::max(image.height(), 1));
+  frame.bindTarget();
+  if (!fullscreen) glViewport(frame.width - wide - 8, 8, wide, side);
+  glDisable(GL_DEPTH_TEST);
+  image.bind(0);
+  gpu_->image.use();
+  gpu_->image.set("uImage", 0);
+  glBindVertexArray(gpu_->empty_vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  countDrawCall();
+  glEnable(GL_DEPTH_TEST);
+  frame.bindTarget();
+}
+
 void Runner::drawObjects(const Frame& frame, const Program& program, Objects which,
                          const glm::mat4* cull) const {
   program.use();

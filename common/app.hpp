@@ -72,6 +72,8 @@ struct Frame {
   // perspective light, whose raw depths crowd near 1).
   void drawDepthInset(const Texture& depth, float near, float far, bool perspective,
                       bool fullscreen = false) const;
+  // A colour texture in a corner (keeping its aspect), or over the whole target.
+  void drawImageInset(const Texture& image, bool fullscreen = false) const;
 };
 
 class Lesson {
@@ -174,6 +176,7 @@ class Runner {
   const glm::mat4& presetModel(size_t index) const { return preset_models_.at(index); }
   void drawInset(const Frame& frame, const Texture& depth, float near, float far, bool perspective,
                  bool fullscreen) const;
+  void drawImageInset(const Frame& frame, const Texture& image, bool fullscreen) const;
 
  private:
   struct Gpu;
