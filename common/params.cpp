@@ -416,19 +416,11 @@ std::string Params::listText() const {
     Param fallback = p;
     std::copy(std::begin(p.fallback), std::end(p.fallback), std::begin(fallback.value));
     fallback.string_value = p.string_fallback;
-    std::string range;
-    if (p.kind == ParamKind::Choice) {
-      range = joined(p.choices);
-    } else if (p.kind == ParamKind::Bool) {
-      range = "true, false";
-    } else if (p.kind != ParamKind::String) {
-      // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on "[" + std::string.
-      range.append("[").append(number(p.min)).append(", ").append(number(p.max)).append("]");
-    } else {
-      range = "text";
-    }
-    std::snprintf(line, sizeof line, "%-18s %-6s default %-14s %-28s %s\n", p.name.c_str(),
-                  kindName(p.kind), fallback.text().c_str(), range.c_str(), p.help.c_str());
+    // What is allowed goes last, in the words --set's errors use: a long list of choices
+    // would push every column after it out of line.
+    std::snprintf(line, sizeof line, "%-18s %-6s default %-14s %s; %s\n", p.name.c_str(),
+                  kindName(p.kind), fallback.text().c_str(), p.help.c_str(),
+                  allowed(p).c_str());
     out += line;
   }
   return out;
