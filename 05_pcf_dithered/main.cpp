@@ -15,6 +15,7 @@
 // light take no taps, and a kernel whose 4 probe taps agree stops there.
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "app.hpp"
@@ -112,7 +113,8 @@ class PcfDithered final : public Lesson {
                                              : 4);
       e.set("uRadius", radius);
       e.set("uGridSide", grid);
-      e.set("uPoissonTaps", p.at("pcf.taps").i());
+      // Fewer than 4 Poisson points all sit off centre and shift the shadow sideways.
+      e.set("uPoissonTaps", std::max(4, p.at("pcf.taps").i()));
       e.set("uEarlyOut", p.at("pcf.early_out").b() ? 1 : 0);
       e.set("uCount", counting ? 1 : 0);
       e.set("uTexel", glm::vec2(1.0f / static_cast<float>(map_.width()),
@@ -189,7 +191,8 @@ class PcfDithered final : public Lesson {
     // Depth along the light's axis (a receiver behind a spot light gets no shadow anyway).
     const float axial = std::max(glm::dot(ray * d_receiver_, f.light.direction), fr.near);
     texel_world_ = map_.texelWorldSize(axial);
-    area_radius_ = pcf::areaLightRadius(kernelTexels, texel_world_, d_occluder_, d_receiver_);
+    area_radius_ =
+        pcf::areaLightRadius(kernelTexels, texel_world_, d_occluder_, d_receiver_, fr.directional);
     return area_radius_;
   }
 

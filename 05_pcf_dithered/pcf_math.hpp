@@ -73,15 +73,19 @@ inline int gridSide(int taps) {
 // at distance dOccluder from the light a penumbra of half-width a (dReceiver - dOccluder) /
 // dOccluder on a receiver at dReceiver (similar triangles through the edge). Equal when
 //   a = kernelTexels * h * dOccluder / (dReceiver - dOccluder).
+// The directional truth (common/truth.cpp) is a cone of half-angle atan(a / dReceiver)
+// around each receiver point's own ray, so its penumbra is a (dReceiver - dOccluder) /
+// dReceiver, and then a = kernelTexels * h * dReceiver / (dReceiver - dOccluder).
 // It can match at one occluder-receiver gap only: nearer contacts get too much blur from the
 // kernel, taller casters too little. 0 when there is no kernel or no gap.
 inline float areaLightRadius(float kernelTexels, float texelAtReceiver, float dOccluder,
-                             float dReceiver) {
+                             float dReceiver, bool directional = false) {
   if (!(kernelTexels > 0.0f) || !(texelAtReceiver > 0.0f) || !(dOccluder > 0.0f) ||
       !(dReceiver > dOccluder)) {
     return 0.0f;
   }
-  const float a = kernelTexels * texelAtReceiver * dOccluder / (dReceiver - dOccluder);
+  const float near_side = directional ? dReceiver : dOccluder;
+  const float a = kernelTexels * texelAtReceiver * near_side / (dReceiver - dOccluder);
   return std::isfinite(a) ? a : 0.0f;
 }
 

@@ -140,6 +140,8 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
 // ---------------------------------------------------------------- GPU state of the runner
 
 struct Runner::Gpu {
+  // First member, so it is destroyed last: every GL object below needs it to be deleted.
+  std::unique_ptr<HeadlessContext> context;
   std::vector<Mesh> meshes;
   // Headless target: what the lesson draws into and the PNG is read from.
   Texture target_color, target_depth;
@@ -155,7 +157,6 @@ struct Runner::Gpu {
   GLuint empty_vao = 0;
   bool imgui = false;
   bool imgui_glfw = false;
-  std::unique_ptr<HeadlessContext> context;
   GLFWwindow* window = nullptr;
 
   ~Gpu() {
@@ -329,8 +330,7 @@ Runner::Runner(const std::string& lessonName, std::unique_ptr<Lesson> lesson, Ru
 }
 
 Runner::~Runner() {
-  gpu_.reset();
-  measure_.reset();
+  releaseGl();
   if (window_) glfwTerminate();
 }
 
@@ -445,6 +445,14 @@ void Runner::initHeadless() {
   }
 }
 
+void Runner::releaseGl() {
+  // GL objects go while their context is still there: the lesson's, the timers', then the
+  // runner's own, the context last (Gpu declares it first, so it is destroyed last).
+  lesson_.reset();
+  measure_.reset();
+  gpu_.reset();
+}
+
 void Runner::initGl() {
   GlErrorLog::install();
   GlErrorLog::reset();
@@ -481,13 +489,19 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
                         bool withPanel) {
   measure_->setEnabled(timed);
   if (params_.consume(kDirtyScene)) loadScene();
-  const Light light = currentLight();
+  Light light;
   Frame frame(*this, params_, scene_, *measure_, light);
-  frame.eye = params_.at("camera.pos").v();
-  frame.view = lookAtSafe(frame.eye, params_.at("camera.target").v());
-  const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
-  frame.projection = glm::perspective(glm::radians(params_.at("camera.fov").f()), aspect,
-                                      scene_.camera.near, scene_.camera.far);
+  // The light and camera as the parameters say now; again after the panel, whose widgets
+  // may move them this very frame (the lesson must draw with what its map is built for).
+  const auto readParams = [&] {
+    light = currentLight();
+    frame.eye = params_.at("camera.pos").v();
+    frame.view = lookAtSafe(frame.eye, params_.at("camera.target").v());
+    const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
+    frame.projection = glm::perspective(glm::radians(params_.at("camera.fov").f()), aspect,
+                                        scene_.camera.near, scene_.camera.far);
+  };
+  readParams();
   frame.width = width;
   frame.height = height;
   frame.target = target;
@@ -507,22 +521,15 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
     ImGui::NewFrame();
     drawPanel(frame);
     ImGui::Render();
-    // A widget may have changed the scene or the view this very frame.
+    // A widget may have changed the scene, the light, the camera or the view this frame.
     if (params_.consume(kDirtyScene)) loadScene();
+    readParams();
     frame.mode = params_.at("view").choice();
   }
 
   measure_->beginFrame();
-  // Every lesson starts from the same GL state.
   frame.bindTarget();
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glDisable(GL_BLEND);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_STENCIL_TEST);
-  glDisable(GL_POLYGON_OFFSET_FILL);
+  resetGlState();  // every lesson starts from the same GL state
   if (frame.mode == "truth" || frame.mode == "error") {
     measure_->setEnabled(false);
     measureError();
@@ -578,11 +585,33 @@ std::vector<float> Runner::renderVisibility() {
   return visibility;
 }
 
+void Runner::resetGlState() {
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glStencilMask(0xFF);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDisable(GL_CLIP_DISTANCE0);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+}
+
 std::string Runner::errorKey() const {
   // Everything that can change the picture: every parameter but the view, and the size.
   std::string key = std::to_string(options_.width) + "x" + std::to_string(options_.height);
+  char value[40];
   for (const auto& p : params_.all()) {
-    if (p.name != "view") key += ";" + p.name + "=" + p.text();
+    if (p.name == "view") continue;
+    // Full precision: text() rounds to 6 digits, and nearby values must not share a key.
+    key += ";" + p.name + "=" + p.string_value;
+    for (double v : p.value) {
+      std::snprintf(value, sizeof value, ",%.17g", v);
+      key += value;
+    }
   }
   return key;
 }
@@ -612,13 +641,10 @@ const ErrorState& Runner::measureError() {
   glViewport(0, 0, w, h);
   const float clear_position[4] = {0, 0, 0, -1};
   const float clear_normal[4] = {0, 0, 0, 0};
+  resetGlState();  // whatever the lesson left set must not shape the truth's surfaces
   glClearBufferfv(GL_COLOR, 0, clear_position);
   glClearBufferfv(GL_COLOR, 1, clear_normal);
   glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  glEnable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  glDisable(GL_STENCIL_TEST);
-  glDisable(GL_POLYGON_OFFSET_FILL);
   const Light light = currentLight();
   Frame frame(*this, params_, scene_, *measure_, light);
   const glm::vec3 eye = params_.at("camera.pos").v();
@@ -657,17 +683,21 @@ const ErrorState& Runner::measureError() {
     std::snprintf(name, sizeof name, "area r=%g n=%d", truth_area_radius_, truth_light.samples);
     error_.metrics.truth = name;
   }
-  long long shaded_nonfinite = 0;
+  // Non-finite pixels: where the visibility or any channel of the shaded picture is NaN or
+  // Inf, each pixel counted once.
+  long long nonfinite = 0;
   std::vector<std::uint8_t> shaded_bytes(n * 4);
   for (size_t i = 0; i < n; ++i) {
+    bool finite = std::isfinite(rendered[i]);
     for (int c = 0; c < 4; ++c) {
       const float v = shaded[i][c];
-      if (!std::isfinite(v)) ++shaded_nonfinite;
+      finite = finite && std::isfinite(v);
       shaded_bytes[i * 4 + static_cast<size_t>(c)] = static_cast<std::uint8_t>(
           std::lround(255.0f * std::clamp(std::isfinite(v) ? v : 0.0f, 0.0f, 1.0f)));
     }
+    if (!finite) ++nonfinite;
   }
-  error_.metrics.nonfinite_pixels += shaded_nonfinite;
+  error_.metrics.nonfinite_pixels = nonfinite;
   error_image_ = {w, h, errorImage(shaded_bytes, rendered, truth)};
   truth_image_ = {w, h, std::vector<std::uint8_t>(n * 4)};
   for (size_t i = 0; i < n; ++i) {
@@ -948,7 +978,7 @@ int Runner::runWindow() {
     }
     glfwSwapBuffers(window);
   }
-  gpu_.reset();
+  releaseGl();
   glfwDestroyWindow(window);
   return GlErrorLog::count() > 0 ? 1 : 0;
 }

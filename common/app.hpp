@@ -182,7 +182,9 @@ class Runner {
   struct Gpu;
   void declareShared();
   static void declareSharedInto(Params& params);
-  void initGl();  // the runner's GL resources and the lesson's, once a context is current
+  void initGl();     // the runner's GL resources and the lesson's, once a context is current
+  void releaseGl();  // all of them, in an order that keeps the context alive to the end
+  static void resetGlState();
   void loadScene();
   Light currentLight() const;
   std::string errorKey() const;

@@ -419,8 +419,7 @@ std::string Params::listText() const {
     // What is allowed goes last, in the words --set's errors use: a long list of choices
     // would push every column after it out of line.
     std::snprintf(line, sizeof line, "%-18s %-6s default %-14s %s; %s\n", p.name.c_str(),
-                  kindName(p.kind), fallback.text().c_str(), p.help.c_str(),
-                  allowed(p).c_str());
+                  kindName(p.kind), fallback.text().c_str(), p.help.c_str(), allowed(p).c_str());
     out += line;
   }
   return out;

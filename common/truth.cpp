@@ -302,9 +302,11 @@ std::vector<float> Truth::visibility(const SurfaceBuffer& surface, const TruthLi
       // p's distance to the light plane through `position` (the near plane of the light's
       // orthographic frustum). Equivalently, a disk in that plane centred on p's own axis
       // line, with rays continued to infinity: every pixel sees the light straight along
-      // -axis (still directional), the penumbra widths match a disk light of that radius
-      // in the light plane (what PCSS assumes in light space), and radius -> 0 tends to the
-      // hard directional shadow. Points at or behind the plane get a tiny D (wide cone).
+      // -axis (still directional) and radius -> 0 tends to the hard directional shadow.
+      // The cone is set at the receiver, so an occluder edge a gap g above it casts a
+      // penumbra of half-width g * radius / D (not g * radius / D_occluder, as a disk light
+      // in that plane would); lesson 05 matches its kernel to that. Points at or behind the
+      // plane get a tiny D (wide cone).
       const float dist = std::max(glm::dot(light.position - o, -axis), offset);
       centre = o - axis * dist;
     } else if (axis == glm::vec3(0.0f)) {

@@ -194,6 +194,45 @@ TEST(Lesson03, ImGuiDragOnTheShadowSizeSliderChangesTheParameterAndThePicture) {
   EXPECT_EQ(runner->glErrors(), 0);
 }
 
+TEST(Lesson03, ALightMovedInThePanelRendersExactlyAsTheSameLightSetOnTheCommandLine) {
+  // A widget changes the light in the middle of a frame; that frame's shadow map must be
+  // built for the new light, not the one the frame started with (a stale map once stayed
+  // on screen with misplaced shadows until something else changed).
+  auto dragged = startLesson(kLesson, {"inset=false"}, 800, 600, /*panel=*/true);
+  dragged->setMouse({-1, -1}, false);
+  dragged->renderFrame();
+  dragged->renderFrame();
+  const Param& fov = dragged->params().at("light.fov");
+  const float y = 0.5f * (fov.widget_min.y + fov.widget_max.y);
+  const float x = fov.widget_min.x + 0.3f * (fov.widget_max.x - fov.widget_min.x);
+  dragged->setMouse({x, y}, false);
+  dragged->renderFrame();
+  dragged->setMouse({x, y}, true);
+  dragged->renderFrame();  // the click sets the value and the frame renders with it
+  dragged->setMouse({x, y}, false);
+  ASSERT_NE(dragged->params().at("light.fov").f(), 55.0f) << "the click reached the slider";
+  const Image moved = dragged->readImage();
+  char value[40];
+  std::snprintf(value, sizeof value, "light.fov=%.17g", fov.value[0]);
+  const int panel_right = static_cast<int>(fov.widget_max.x) + 140;
+  const double moved_false_lit = dragged->measureError().metrics.false_lit_pct;
+  dragged.reset();  // one GL and ImGui context at a time
+  auto fresh = startLesson(kLesson, {"inset=false", value}, 800, 600, /*panel=*/true);
+  fresh->setMouse({-1, -1}, false);
+  fresh->renderFrame();
+  const Image expected = fresh->readImage();
+  // Right of the panel (its text differs: timings), the pictures must be identical.
+  size_t differing = 0;
+  for (int row = 0; row < moved.height; ++row) {
+    for (int col = panel_right; col < moved.width; ++col) {
+      const size_t i = (static_cast<size_t>(row) * moved.width + col) * 4;
+      if (!std::equal(&moved.rgba[i], &moved.rgba[i] + 3, &expected.rgba[i])) ++differing;
+    }
+  }
+  EXPECT_EQ(differing, 0u) << value;
+  EXPECT_EQ(moved_false_lit, fresh->measureError().metrics.false_lit_pct);
+}
+
 TEST(Lesson03, SliderExtremesStayFiniteAndErrorFree) {
   const std::vector<std::vector<std::string>> extremes = {
       {"shadow.size=64", "shadow.height=4096", "shadow.format=16"},

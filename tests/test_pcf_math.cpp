@@ -100,6 +100,8 @@ TEST(PcfMath, AreaLightRadiusMatchesThePenumbraWidth) {
   EXPECT_EQ(areaLightRadius(2.0f, 0.01f, 6.0f, 6.0f), 0.0f);
   EXPECT_EQ(areaLightRadius(2.0f, 0.01f, 0.0f, 6.0f), 0.0f);
   EXPECT_EQ(areaLightRadius(2.0f, -0.01f, 6.0f, 8.0f), 0.0f);  // receiver behind the light
+  // Directional: the truth's cone is set at the receiver, so the radius scales with dR, not dO.
+  EXPECT_FLOAT_EQ(areaLightRadius(2.0f, 0.01f, 6.0f, 8.0f, /*directional=*/true), a * 8.0f / 6.0f);
 }
 
 }  // namespace
