@@ -77,6 +77,25 @@ inline void expectFiniteAndErrorFree(const std::string& lesson,
   }
 }
 
+// The ends of the shadow-map sliders every shadow-map lesson shares (ShadowMap, the light,
+// the camera, dimming), as settings lists for expectFiniteAndErrorFree. Near and far are set
+// with the fit off, so they reach the map.
+inline std::vector<std::vector<std::string>> shadowMapSliderExtremes() {
+  return {{"shadow.size=64", "shadow.height=4096", "shadow.format=16"},
+          {"shadow.size=4096", "shadow.format=32f", "shadow.filter=linear"},
+          {"light.near=0.001", "light.far=1000", "shadow.fit=false"},
+          {"light.near=100", "light.far=0.01", "shadow.fit=false"},  // far < near: sanitized
+          {"light.fov=5"},
+          {"light.fov=160"},
+          {"light.pos=0,0.5,0", "light.target=0,0.5,0"},   // degenerate: eye == target
+          {"light.pos=0,50,0", "light.target=0,0,0"},      // looking straight down
+          {"light.pos=-50,0.01,0", "light.target=0,0,0"},  // grazing
+          {"light.type=directional", "light.extent=0.5"},
+          {"camera.pos=0,0.6,0", "camera.target=0,0.6,0"},
+          {"dimming=0"},
+          {"dimming=1"}};
+}
+
 // Renders every `view` the lesson offers: no GL error in any, no two alike (each view shows
 // something of its own), and no NaN or Inf in what the lesson draws.
 inline void expectEveryViewCleanAndDistinct(Runner& runner, const std::string& label = {}) {

@@ -234,20 +234,7 @@ TEST(Lesson03, ALightMovedInThePanelRendersExactlyAsTheSameLightSetOnTheCommandL
 }
 
 TEST(Lesson03, SliderExtremesStayFiniteAndErrorFree) {
-  const std::vector<std::vector<std::string>> extremes = {
-      {"shadow.size=64", "shadow.height=4096", "shadow.format=16"},
-      {"shadow.size=4096", "shadow.format=32f", "shadow.filter=linear"},
-      {"light.near=0.001", "light.far=1000"},
-      {"light.near=100", "light.far=0.01"},  // far < near: sanitized, no NaN
-      {"light.fov=5"},
-      {"light.fov=160"},
-      {"light.pos=0,0.5,0", "light.target=0,0.5,0"},   // degenerate: eye == target
-      {"light.pos=0,50,0", "light.target=0,0,0"},      // looking straight down
-      {"light.pos=-50,0.01,0", "light.target=0,0,0"},  // grazing
-      {"light.type=directional", "light.extent=0.5"},
-      {"camera.pos=0,0.6,0", "camera.target=0,0.6,0"},
-      {"dimming=0"},
-      {"dimming=1"}};
+  std::vector<std::vector<std::string>> extremes = testing::shadowMapSliderExtremes();
   testing::expectFiniteAndErrorFree(kLesson, extremes);
 }
 

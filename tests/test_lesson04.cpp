@@ -219,19 +219,7 @@ TEST(Lesson04, ClosedMeshesAreWoundCounterClockwiseFromOutside) {
 }
 
 TEST(Lesson04, SliderExtremesStayFiniteAndErrorFree) {
-  std::vector<std::vector<std::string>> extremes = {
-      {"shadow.size=64", "shadow.height=4096", "shadow.format=16"},
-      {"shadow.size=4096", "shadow.format=32f", "shadow.filter=linear"},
-      {"light.near=0.001", "light.far=1000", "shadow.fit=false"},
-      {"light.near=100", "light.far=0.01", "shadow.fit=false"},
-      {"light.fov=5"},
-      {"light.fov=160"},
-      {"light.pos=0,0.5,0", "light.target=0,0.5,0"},
-      {"light.pos=-50,0.01,0", "light.target=0,0,0"},
-      {"light.type=directional", "light.extent=0.5"},
-      {"camera.pos=0,0.6,0", "camera.target=0,0.6,0"},
-      {"dimming=0"},
-      {"dimming=1"}};
+  std::vector<std::vector<std::string>> extremes = testing::shadowMapSliderExtremes();
   for (const std::string mode : {"none", "constant_only", "polygon_offset", "clip_translate",
                                  "gradient", "back_faces", "normal_offset"}) {
     extremes.push_back({"bias.mode=" + mode, "bias.factor=0", "bias.units=0", "bias.clamp=0"});

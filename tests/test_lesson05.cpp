@@ -284,23 +284,10 @@ TEST(Lesson05, DimmingLeavesDiffuseLightInShadow) {
 }
 
 TEST(Lesson05, SliderExtremesStayFiniteAndErrorFree) {
-  std::vector<std::vector<std::string>> extremes = {
-      {"shadow.size=64", "shadow.height=4096", "shadow.format=16"},
-      {"shadow.size=4096", "shadow.format=32f", "shadow.filter=linear"},
-      {"light.near=0.001", "light.far=1000", "shadow.fit=false"},
-      {"light.near=100", "light.far=0.01", "shadow.fit=false"},
-      {"light.fov=5"},
-      {"light.fov=160"},
-      {"light.pos=0,0.5,0", "light.target=0,0.5,0"},
-      {"light.pos=-50,0.01,0", "light.target=0,0,0"},
-      {"light.pos=0,50,0", "light.target=0,0,0"},
-      {"light.type=directional", "light.extent=0.5"},
-      {"camera.pos=0,0.6,0", "camera.target=0,0.6,0"},
-      {"dimming=0"},
-      {"dimming=1"},
-      {"bias.factor=0", "bias.units=0"},
-      {"bias.factor=20", "bias.units=10000000"},
-      {"pcf.count=false"}};
+  std::vector<std::vector<std::string>> extremes = testing::shadowMapSliderExtremes();
+  extremes.push_back({"bias.factor=0", "bias.units=0"});
+  extremes.push_back({"bias.factor=20", "bias.units=10000000"});
+  extremes.push_back({"pcf.count=false"});
   for (const std::string mode : {"none", "hw2x2", "grid", "dithered", "poisson"}) {
     extremes.push_back({"pcf.mode=" + mode, "pcf.radius=0", "pcf.taps=1"});
     extremes.push_back({"pcf.mode=" + mode, "pcf.radius=16", "pcf.taps=64", "shadow.size=64"});
