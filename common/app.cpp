@@ -57,7 +57,8 @@ const char* kUsage =
     "  --backend NAME       headless context: osmesa (default) or egl (surfaceless)\n"
     "  --size WxH           image size (default 800x600)\n"
     "  --frames N           timed frames after one warm-up frame (default 5)\n"
-    "  --out FILE.png       write the final frame (in a window: --frames frames, then exit)\n"
+    "  --out FILE.png       write the final frame (default out/LESSON.png; in a window:\n"
+    "                       --frames frames, then exit)\n"
     "  --panel              draw the ImGui panel into the headless picture too\n"
     "  --set name=value     set a parameter (repeatable); see --list-params\n"
     "  --list-params        list every parameter: name, type, default, range, help\n"
@@ -841,7 +842,13 @@ int Runner::run() {
 
 int Runner::runHeadless() {
   initHeadless();
-  const std::string out = options_.out.empty() ? name_ + ".png" : options_.out;
+  // Without --out the picture goes where ./run.sh puts them, out/<lesson>.png (git-ignored).
+  std::string out = options_.out;
+  if (out.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories("out", ec);
+    out = "out/" + name_ + ".png";
+  }
   renderFrame();  // warm-up: shader JIT and the first shadow map land here
   // A snapshot with the panel should show the error numbers, so measure them first.
   if (options_.panel && options_.truth) measureError();
