@@ -52,7 +52,7 @@ struct Axis {
 
 // The label of a value and the --set assignments it stands for.
 std::pair<std::string, std::vector<std::string>> settingsOf(const Axis& axis,
-                                                           const std::string& value) {
+                                                            const std::string& value) {
   const auto colon = value.find(':');
   if (colon == std::string::npos) return {value, {axis.name + "=" + value}};
   std::vector<std::string> sets;
