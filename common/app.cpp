@@ -497,10 +497,8 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
   const auto readParams = [&] {
     light = currentLight();
     frame.eye = params_.at("camera.pos").v();
-    frame.view = lookAtSafe(frame.eye, params_.at("camera.target").v());
-    const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
-    frame.projection = glm::perspective(glm::radians(params_.at("camera.fov").f()), aspect,
-                                        scene_.camera.near, scene_.camera.far);
+    frame.view = cameraView();
+    frame.projection = cameraProjection(width, height);
   };
   readParams();
   frame.width = width;
@@ -535,7 +533,7 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
     measure_->setEnabled(false);
     measureError();
     measure_->setEnabled(timed);
-    showImage(frame.mode == "truth" ? truth_image_ : error_image_, target, width, height);
+    showImage(frame, frame.mode == "truth" ? truth_image_ : error_image_);
   } else {
     lesson_->render(frame);
     light_frustum_ = frame.light_view_projection;
@@ -549,7 +547,17 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
   measure_->setEnabled(true);
 }
 
-void Runner::showImage(const Image& image, GLuint target, int width, int height) {
+glm::mat4 Runner::cameraView() const {
+  return lookAtSafe(params_.at("camera.pos").v(), params_.at("camera.target").v());
+}
+
+glm::mat4 Runner::cameraProjection(int width, int height) const {
+  const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
+  return glm::perspective(glm::radians(params_.at("camera.fov").f()), aspect, scene_.camera.near,
+                          scene_.camera.far);
+}
+
+void Runner::showImage(const Frame& frame, const Image& image) {
   if (image.width == 0) return;
   if (gpu_->shown.width() != image.width || gpu_->shown.height() != image.height) {
     gpu_->shown = Texture::color(image.width, image.height, GL_RGBA8);
@@ -558,15 +566,7 @@ void Runner::showImage(const Image& image, GLuint target, int width, int height)
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
                   image.rgba.data());
-  glBindFramebuffer(GL_FRAMEBUFFER, target);
-  glViewport(0, 0, width, height);
-  glDisable(GL_DEPTH_TEST);
-  gpu_->shown.bind(0);
-  gpu_->image.use();
-  gpu_->image.set("uImage", 0);
-  glBindVertexArray(gpu_->empty_vao);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glEnable(GL_DEPTH_TEST);
+  drawImageInset(frame, gpu_->shown, /*fullscreen=*/true);
 }
 
 std::vector<float> Runner::renderVisibility() {
@@ -648,12 +648,8 @@ const ErrorState& Runner::measureError() {
   glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   const Light light = currentLight();
   Frame frame(*this, params_, scene_, *measure_, light);
-  const glm::vec3 eye = params_.at("camera.pos").v();
-  const glm::mat4 projection = glm::perspective(glm::radians(params_.at("camera.fov").f()),
-                                                static_cast<float>(w) / static_cast<float>(h),
-                                                scene_.camera.near, scene_.camera.far);
-  gpu_->gbuffer.set("uViewProjection",
-                    projection * lookAtSafe(eye, params_.at("camera.target").v()));
+  // The very camera the lesson drew with, or truth and picture would not line up.
+  gpu_->gbuffer.set("uViewProjection", cameraProjection(w, h) * cameraView());
   gpu_->gbuffer.set("uHasLightFrustum", light_frustum_ ? 1 : 0);
   gpu_->gbuffer.set("uLightViewProjection", light_frustum_.value_or(glm::mat4(1.0f)));
   drawObjects(frame, gpu_->gbuffer, Objects::All, nullptr);

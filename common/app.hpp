@@ -192,7 +192,10 @@ class Runner {
   void renderInto(GLuint target, int width, int height, const std::string& mode, bool timed,
                   bool withPanel);
   void drawPanel(Frame& frame);
-  void showImage(const Image& image, GLuint target, int width, int height);
+  void showImage(const Frame& frame, const Image& image);  // a CPU picture over the target
+  // The eye's matrices from camera.*: one definition for the lesson and the truth's pass.
+  glm::mat4 cameraView() const;
+  glm::mat4 cameraProjection(int width, int height) const;
   static constexpr int kNoWindow = -1;  // runWindow could not open one
   int runWindow();
   int runHeadless();
