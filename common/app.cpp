@@ -236,6 +236,20 @@ void Frame::drawImageInset(const Texture& image, bool fullscreen) const {
   runner.drawImageInset(*this, image, fullscreen);
 }
 
+void Frame::drawFullscreen(const Program& program) const {
+  runner.drawFullscreen(*this, program);
+}
+
+void Runner::drawFullscreen(const Frame& frame, const Program& program) const {
+  frame.bindTarget();
+  glDisable(GL_DEPTH_TEST);
+  program.use();
+  glBindVertexArray(gpu_->empty_vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  countDrawCall();
+  glEnable(GL_DEPTH_TEST);
+}
+
 void Runner::drawImageInset(const Frame& frame, const Texture& image, bool fullscreen) const {
   const int side = std::max(16, std::min(frame.width, frame.height) / 4);
   const int wide = std::max(1, side * image.width() / std::max(image.height(), 1));
@@ -587,16 +601,7 @@ std::vector<float> Runner::renderVisibility() {
 }
 
 void Runner::resetGlState() {
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glStencilMask(0xFF);
-  glDisable(GL_BLEND);
-  glDisable(GL_CULL_FACE);
-  glCullFace(GL_BACK);
-  glDisable(GL_STENCIL_TEST);
-  glDisable(GL_POLYGON_OFFSET_FILL);
+  PassState{}.apply();
   glDisable(GL_CLIP_DISTANCE0);
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
 }

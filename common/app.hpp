@@ -74,6 +74,9 @@ struct Frame {
                       bool fullscreen = false) const;
   // A colour texture in a corner (keeping its aspect), or over the whole target.
   void drawImageInset(const Texture& image, bool fullscreen = false) const;
+  // One triangle over the whole target with `program` (common/shaders/fullscreen.vert gives
+  // vUv), no depth test: for debug views computed per pixel.
+  void drawFullscreen(const Program& program) const;
 };
 
 class Lesson {
@@ -177,6 +180,7 @@ class Runner {
   void drawInset(const Frame& frame, const Texture& depth, float near, float far, bool perspective,
                  bool fullscreen) const;
   void drawImageInset(const Frame& frame, const Texture& image, bool fullscreen) const;
+  void drawFullscreen(const Frame& frame, const Program& program) const;
 
  private:
   struct Gpu;

@@ -83,30 +83,112 @@ Texture Texture::depthStencil(int width, int height) {
   return t;
 }
 
-Texture Texture::color(int width, int height, GLenum internalFormat) {
+Texture Texture::create(GLenum target, int width, int height) {
   Texture t;
   GLuint id = 0;
   glGenTextures(1, &id);
   t.name_ = GlName<deleteTexture>(id);
+  t.target_ = target;
   t.width_ = width;
   t.height_ = height;
-  glBindTexture(GL_TEXTURE_2D, id);
+  glBindTexture(target, id);
+  return t;
+}
+
+Texture Texture::color(int width, int height, GLenum internalFormat) {
+  Texture t = create(GL_TEXTURE_2D, width, height);
   glTexStorage2D(GL_TEXTURE_2D, 1, internalFormat, width, height);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  t.setWrap(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
   t.setFilter(GL_LINEAR);
   return t;
 }
 
+Texture Texture::table1D(int width, GLenum internalFormat, GLenum format, const void* pixels) {
+  Texture t = create(GL_TEXTURE_1D, width, 1);
+  glTexStorage1D(GL_TEXTURE_1D, 1, internalFormat, width);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage1D(GL_TEXTURE_1D, 0, 0, width, format, GL_UNSIGNED_BYTE, pixels);
+  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  t.setFilter(GL_NEAREST);
+  return t;
+}
+
+void Texture::upload(GLenum format, GLenum type, const void* pixels) const {
+  glBindTexture(target_, name_.id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(target_, 0, 0, 0, width_, height_, format, type, pixels);
+}
+
+void Texture::setWrap(GLenum s, GLenum t) const {
+  glBindTexture(target_, name_.id());
+  glTexParameteri(target_, GL_TEXTURE_WRAP_S, static_cast<GLint>(s));
+  glTexParameteri(target_, GL_TEXTURE_WRAP_T, static_cast<GLint>(t));
+}
+
+void Texture::setBorder(const glm::vec4& color) const {
+  glBindTexture(target_, name_.id());
+  glTexParameterfv(target_, GL_TEXTURE_BORDER_COLOR, &color[0]);
+}
+
+void Texture::setSwizzle(GLenum r, GLenum g, GLenum b, GLenum a) const {
+  const GLint swizzle[4] = {static_cast<GLint>(r), static_cast<GLint>(g), static_cast<GLint>(b),
+                            static_cast<GLint>(a)};
+  glBindTexture(target_, name_.id());
+  glTexParameteriv(target_, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+}
+
 void Texture::bind(int unit) const {
   glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
-  glBindTexture(GL_TEXTURE_2D, name_.id());
+  glBindTexture(target_, name_.id());
 }
 
 void Texture::setFilter(GLenum minMag) const {
-  glBindTexture(GL_TEXTURE_2D, name_.id());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(minMag));
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(minMag));
+  glBindTexture(target_, name_.id());
+  glTexParameteri(target_, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(minMag));
+  glTexParameteri(target_, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(minMag));
+}
+
+Buffer::Buffer(GLenum target, GLsizeiptr bytes, const void* data, GLenum usage)
+    : target_(target), bytes_(bytes) {
+  GLuint id = 0;
+  glGenBuffers(1, &id);
+  name_ = GlName<deleteBuffer>(id);
+  glBindBuffer(target, id);
+  glBufferData(target, bytes, data, usage);
+}
+
+void SamplesPassedQuery::begin() {
+  if (!name_) {
+    GLuint id = 0;
+    glGenQueries(1, &id);
+    name_ = GlName<deleteQuery>(id);
+  }
+  glBeginQuery(GL_SAMPLES_PASSED, name_.id());
+}
+
+long long SamplesPassedQuery::result() const {
+  GLuint64 samples = 0;
+  glGetQueryObjectui64v(name_.id(), GL_QUERY_RESULT, &samples);
+  return static_cast<long long>(samples);
+}
+
+void PassState::apply() const {
+  const auto set = [](GLenum cap, bool on) { on ? glEnable(cap) : glDisable(cap); };
+  set(GL_DEPTH_TEST, depth_test);
+  glDepthFunc(depth_func);
+  glDepthMask(depth_write ? GL_TRUE : GL_FALSE);
+  const GLboolean color = color_write ? GL_TRUE : GL_FALSE;
+  glColorMask(color, color, color, color);
+  set(GL_CULL_FACE, cull);
+  glCullFace(cull_face);
+  set(GL_POLYGON_OFFSET_FILL, polygon_offset);
+  glPolygonOffset(offset_factor, offset_units);
+  set(GL_BLEND, blend);
+  glBlendFunc(blend_src, blend_dst);
+  set(GL_STENCIL_TEST, stencil_test);
+  glStencilFunc(stencil_func, stencil_ref, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, stencil_pass);
+  glStencilMask(0xFF);
 }
 
 void Texture::setCompare(bool compare) const {

@@ -65,17 +65,79 @@ class Texture {
   static Texture depthStencil(int width, int height);
   // A colour texture: GL_RGBA8, GL_RGBA32F, GL_R8, ...
   static Texture color(int width, int height, GLenum internalFormat);
+  // A 1D texture (GL_R8, GL_RG8, ...) filled from `pixels` (`format`, unsigned bytes), read
+  // NEAREST and clamped to its edge texels: a lookup table such as a ramp.
+  static Texture table1D(int width, GLenum internalFormat, GLenum format, const void* pixels);
+  // Replaces every texel of a 2D texture with `pixels` (tightly packed rows).
+  void upload(GLenum format, GLenum type, const void* pixels) const;
   void bind(int unit) const;
   void setFilter(GLenum minMag) const;
+  void setWrap(GLenum s, GLenum t) const;
+  void setBorder(const glm::vec4& color) const;
+  // Which stored channel each of r, g, b, a reads (GL_RED, GL_GREEN, GL_ZERO, GL_ONE, ...).
+  void setSwizzle(GLenum r, GLenum g, GLenum b, GLenum a) const;
   // Makes a depth texture a sampler2DShadow (GL_COMPARE_REF_TO_TEXTURE) or a plain one.
   void setCompare(bool compare) const;
   GLuint id() const { return name_.id(); }
+  GLenum target() const { return target_; }
   int width() const { return width_; }
   int height() const { return height_; }
 
  private:
+  static Texture create(GLenum target, int width, int height);
   GlName<deleteTexture> name_;
+  GLenum target_ = GL_TEXTURE_2D;
   int width_ = 0, height_ = 0;
+};
+
+// A buffer object (vertex data, a shader storage buffer, a pixel-pack buffer).
+class Buffer {
+ public:
+  Buffer() = default;
+  Buffer(GLenum target, GLsizeiptr bytes, const void* data, GLenum usage);
+  void bind() const { glBindBuffer(target_, name_.id()); }
+  void bindBase(GLuint index) const { glBindBufferBase(target_, index, name_.id()); }
+  GLuint id() const { return name_.id(); }
+  GLsizeiptr bytes() const { return bytes_; }
+
+ private:
+  GlName<deleteBuffer> name_;
+  GLenum target_ = GL_ARRAY_BUFFER;
+  GLsizeiptr bytes_ = 0;
+};
+
+// How many samples passed every test (depth, stencil, discard) between begin() and end():
+// the fragments a pass really wrote, where fragment-shader invocations also count the
+// discarded ones.
+class SamplesPassedQuery {
+ public:
+  void begin();  // creates the query object the first time (a context is current by then)
+  void end() const { glEndQuery(GL_SAMPLES_PASSED); }
+  long long result() const;  // waits for the GPU
+
+ private:
+  GlName<deleteQuery> name_;
+};
+
+// The fixed-function state one pass needs, stated in full: apply() sets every field, so
+// nothing a previous pass left enabled leaks into the next. The defaults are the state every
+// lesson starts its frame with.
+struct PassState {
+  bool depth_test = true;
+  GLenum depth_func = GL_LESS;
+  bool depth_write = true;
+  bool color_write = true;
+  bool cull = false;
+  GLenum cull_face = GL_BACK;
+  bool polygon_offset = false;
+  float offset_factor = 0.0f, offset_units = 0.0f;
+  bool blend = false;
+  GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;
+  bool stencil_test = false;
+  GLenum stencil_func = GL_ALWAYS;
+  GLint stencil_ref = 0;
+  GLenum stencil_pass = GL_KEEP;  // what a fragment that passes depth and stencil writes
+  void apply() const;
 };
 
 // How a texture unit reads, overriding the texture's own state: one depth texture can be

@@ -1,10 +1,9 @@
-// The plumbing every shadow-map lesson shares: the shadow.* parameters, the depth texture
-// and its framebuffer (re-created when size or format change), the light frustum (fitted
-// to the casters on request), and the decision whether the map must be rendered again.
-// The passes themselves stay in the lessons.
+// The plumbing lessons 03-05 share: a depth texture and its framebuffer (re-created when
+// size or format change) over the light's view (LightView: frustum, fit, matrices, the
+// re-render decision). The passes themselves stay in the lessons.
 #pragma once
 
-#include "app.hpp"
+#include "light_view.hpp"
 
 namespace shadows {
 
@@ -26,30 +25,24 @@ class ShadowMap {
   void drawInset(const Frame& frame, bool fullscreen = false) const;
 
   const Texture& texture() const { return texture_; }
-  int width() const { return width_; }
-  int height() const { return height_; }
-  const LightFrustum& frustum() const { return frustum_; }
-  const glm::mat4& lightProjection() const { return projection_; }
-  const glm::mat4& lightView() const { return view_; }
-  glm::mat4 lightViewProjection() const { return projection_ * view_; }
-  // B * P_light * V_light: world space to (s, t, r, q).
-  glm::mat4 textureMatrix() const { return shadowTextureMatrix(projection_, view_); }
+  int width() const { return light_.size().x; }
+  int height() const { return light_.size().y; }
+  const LightView& light() const { return light_; }
+  const LightFrustum& frustum() const { return light_.frustum(); }
+  const glm::mat4& lightProjection() const { return light_.projection(); }
+  const glm::mat4& lightView() const { return light_.view(); }
+  glm::mat4 lightViewProjection() const { return light_.viewProjection(); }
+  glm::mat4 textureMatrix() const { return light_.textureMatrix(); }
   GLenum filter() const { return filter_; }
-  // The world size of one texel (along the map's height) at distance d along the light's
-  // axis is x * d + y: a spot's texels grow with distance (x = 2 tan(fov/2) / rows, y = 0),
-  // a directional light's do not (x = 0, y = 2 extent / rows).
-  glm::vec2 texelFootprint() const;
-  float texelWorldSize(float distance) const {
-    const glm::vec2 t = texelFootprint();
-    return t.x * distance + t.y;
-  }
+  glm::vec2 texelFootprint() const { return light_.texelFootprint(); }
+  float texelWorldSize(float distance) const { return light_.texelWorldSize(distance); }
 
  private:
+  LightView light_;
   Texture texture_;
   std::unique_ptr<Framebuffer> framebuffer_;
-  int width_ = 0, height_ = 0, bits_ = 0;
-  LightFrustum frustum_;
-  glm::mat4 projection_{1.0f}, view_{1.0f};
+  glm::ivec2 size_{0};
+  int bits_ = 0;
   GLenum filter_ = GL_NEAREST;
   bool inset_ = true;
 };

@@ -1,0 +1,237 @@
+#include "depth_readback.hpp"
+
+#include <bit>
+
+#include "depth_digits.hpp"
+
+namespace shadows {
+
+void DepthReadback::declare(Params& p, int digits, bool linearChoice) {
+  LightView::declareSize(p);
+  LightView::declareFit(p);
+  // 000: "frustum confined to objects of interest" is where few bits are enough.
+  p.setDefaultFloat(p.at("shadow.fit"), 1.0);
+  if (linearChoice) {
+    p.addChoice("map.encoding", {"projective", "linear"}, "projective",
+                "projective: window depth read back; linear: Heidrich's eye-planar Z in colour",
+                kDirtyShadowMap | kDirtyResources);
+  }
+  p.addChoice("map.path", {"read_pixels", "copy_texture", "render_to_texture"}, "read_pixels",
+              "how the depth reaches a texture: glReadPixels + glTexSubImage2D, "
+              "glCopyTexSubImage2D, or none (the light pass's own texture)",
+              kDirtyShadowMap | kDirtyResources);
+  p.addChoice("bias.mode", {"polygon_offset", "texgen"}, "polygon_offset",
+              "polygon_offset: while the map is built (000); texgen: subtracted from the "
+              "fragment's r before the divide (000: does not work)",
+              kDirtyShadowMap);
+  p.addFloat("bias.factor", 2.0f, 0.0f, 20.0f, "glPolygonOffset factor (slope scale)",
+             kDirtyShadowMap);
+  const std::string step = digits == 1 ? "1/255" : "1/65535";
+  p.addFloat("bias.steps", 1.5f, 0.0f, digits == 1 ? 64.0f : 4096.0f,
+             "constant bias in map steps (" + step + " of the depth range)", kDirtyShadowMap)
+      .logarithmic = digits == 2;
+  p.addBool("inset", true, "show the map in a corner");
+}
+
+void DepthReadback::init() {
+  const auto dir = commonShaderDir();
+  light_program_ = Program(dir / "readback_light.vert", dir / "readback_light.frag");
+  if (digits_ == 1) {
+    // 256 texels, texel i holding i (the last one step short: see rampSteps).
+    std::vector<std::uint8_t> ramp(256);
+    for (int i = 0; i < 256; ++i) ramp[static_cast<size_t>(i)] = static_cast<std::uint8_t>(i);
+    ramp[255] = 254;
+    ramp_ = Texture::table1D(256, GL_R8, GL_RED, ramp.data());
+  } else {
+    // 256 x 256, linear along both axes: column = big digit (r), row = little digit (g).
+    std::vector<std::uint8_t> ramp(256 * 256 * 2);
+    for (int row = 0; row < 256; ++row) {
+      for (int column = 0; column < 256; ++column) {
+        const size_t at = 2 * static_cast<size_t>(row * 256 + column);
+        ramp[at] = static_cast<std::uint8_t>(column);
+        ramp[at + 1] = static_cast<std::uint8_t>(row);
+      }
+    }
+    ramp[ramp.size() - 1] = 254;  // texel (255, 255): see rampDigits
+    ramp_ = Texture::color(256, 256, GL_RG8);
+    ramp_.upload(GL_RG, GL_UNSIGNED_BYTE, ramp.data());
+    ramp_.setFilter(GL_NEAREST);
+    ramp_.setWrap(GL_CLAMP_TO_EDGE, GL_REPEAT);  // t = 256 s wraps once per big digit
+  }
+}
+
+bool DepthReadback::prepare(Frame& f) {
+  Params& p = f.params;
+  const glm::ivec2 size = LightView::mapSize(p);
+  const Param* encoding = p.find("map.encoding");
+  linear_ = encoding != nullptr && encoding->is("linear");
+  path_ = p.at("map.path").choice();
+  inset_ = p.at("inset").b();
+  const std::string key = path_ + (linear_ ? "/linear" : "/projective");
+  bool recreated = false;
+  if (p.consume(kDirtyResources) || size != size_ || key != storage_key_) {
+    storage_key_ = key;
+    recreate(size);
+    recreated = true;
+  }
+  return light_.update(f, size, recreated);
+}
+
+void DepthReadback::recreate(glm::ivec2 size) {
+  size_ = size;
+  const glm::vec4 nothing_in_front(1.0f);  // outside the map: the cleared value, lit
+  light_depth_ = Texture::depth(size.x, size.y, 24);
+  light_target_ = std::make_unique<Framebuffer>();
+  if (linear_) {
+    light_color_ = Texture::color(size.x, size.y, GL_R8);
+    light_color_.setFilter(GL_NEAREST);
+    light_color_.setWrap(GL_CLAMP_TO_BORDER, GL_CLAMP_TO_BORDER);
+    light_color_.setBorder(nothing_in_front);
+    light_color_.setSwizzle(GL_RED, GL_RED, GL_RED, GL_ONE);  // grey in the inset
+    light_target_->attachColor(light_color_);
+  } else {
+    light_color_ = Texture();
+  }
+  light_target_->attachDepth(light_depth_);
+  light_target_->check();
+
+  digits_texture_ = Texture();
+  copied_ = Texture();
+  bytes_.clear();
+  shorts_.clear();
+  if (path_ == "read_pixels") {
+    digits_texture_ = Texture::color(size.x, size.y, digits_ == 1 ? GL_R8 : GL_RG8);
+    digits_texture_.setFilter(GL_NEAREST);
+    digits_texture_.setWrap(GL_CLAMP_TO_BORDER, GL_CLAMP_TO_BORDER);
+    digits_texture_.setBorder(nothing_in_front);
+    if (digits_ == 1) {
+      digits_texture_.setSwizzle(GL_RED, GL_RED, GL_RED, GL_ONE);
+    } else if constexpr (std::endian::native == std::endian::little) {
+      // A 16-bit value's low byte comes first in memory: swap so r is the big digit.
+      digits_texture_.setSwizzle(GL_GREEN, GL_RED, GL_ZERO, GL_ONE);
+    }
+  } else if (path_ == "copy_texture") {
+    if (linear_) {
+      copied_ = Texture::color(size.x, size.y, GL_R8);
+      copied_.setSwizzle(GL_RED, GL_RED, GL_RED, GL_ONE);
+    } else {
+      copied_ = Texture::depth(size.x, size.y, 24);
+    }
+    copied_.setFilter(GL_NEAREST);
+    copied_.setWrap(GL_CLAMP_TO_BORDER, GL_CLAMP_TO_BORDER);
+    copied_.setBorder(nothing_in_front);
+  }
+}
+
+void DepthReadback::render(Frame& f) {
+  const Params& p = f.params;
+  const bool offset = p.at("bias.mode").is("polygon_offset");
+  const float factor = p.at("bias.factor").f(), steps = p.at("bias.steps").f();
+  {
+    auto timing = f.measure.pass("shadow");
+    light_target_->bind();
+    glViewport(0, 0, size_.x, size_.y);
+    PassState state;
+    // 000: "perform bias during depth map construct ... so bias will be in depth buffer
+    // space". One map step is 2^(24 - 8 digits) steps of the 24-bit depth buffer.
+    state.polygon_offset = offset && !linear_;
+    state.offset_factor = factor;
+    state.offset_units = steps * 16777215.0f / (digits_ == 1 ? 255.0f : 65535.0f);
+    state.apply();
+    glClearColor(1.0f, 1.0f, 1.0f, 1.0f);  // linear: "nothing in front" is the top step
+    glClear(GL_DEPTH_BUFFER_BIT | (linear_ ? GL_COLOR_BUFFER_BIT : 0u));
+    const glm::mat4 light_view_projection = light_.viewProjection();
+    light_program_.set("uLightViewProjection", light_view_projection);
+    light_program_.set("uLinear", linear_ ? 1 : 0);
+    light_program_.set("uLinearPlane", linearPlane());
+    light_program_.set("uRamp", 1);
+    // Linear depth lives in colour, where glPolygonOffset does not reach: the light pass adds
+    // the same slope-scaled offset to what it writes.
+    light_program_.set("uOffsetFactor", offset ? factor : 0.0f);
+    light_program_.set("uOffsetSteps", offset ? steps : 0.0f);
+    ramp_.bind(1);
+    f.drawObjects(light_program_, Objects::Casters, &light_view_projection);
+    PassState{}.apply();
+  }
+  transfer(f);
+}
+
+void DepthReadback::transfer(Frame& f) {
+  if (path_ == "render_to_texture") return;  // the eye pass reads the light pass's texture
+  auto timing = f.measure.pass("readback");
+  const int w = size_.x, h = size_.y;
+  const auto texels = static_cast<size_t>(w) * static_cast<size_t>(h);
+  light_target_->bind();
+  if (path_ == "copy_texture") {
+    // Within the GPU: depth buffer to depth texture (or colour to colour, linear).
+    glBindTexture(GL_TEXTURE_2D, copied_.id());
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, w, h);
+    f.measure.count("copied_texels", static_cast<long long>(texels));
+    return;
+  }
+  // Through the CPU, as un-extended OpenGL had to: read back, then load into the texture.
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  if (digits_ == 2) {
+    shorts_.resize(texels);
+    glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, shorts_.data());
+    digits_texture_.upload(GL_RG, GL_UNSIGNED_BYTE, shorts_.data());
+  } else {
+    bytes_.resize(texels);
+    if (linear_) glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadPixels(0, 0, w, h, linear_ ? GL_RED : GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE,
+                 bytes_.data());
+    digits_texture_.upload(GL_RED, GL_UNSIGNED_BYTE, bytes_.data());
+  }
+  f.measure.count("readback_bytes", static_cast<long long>(texels) * digits_);
+}
+
+glm::vec4 DepthReadback::linearPlane() const {
+  // S = (eye-planar distance from the light - near) / (far - near), as one plane equation
+  // (000, "Improving Depth Map Precision"): distance = -(V_light * p).z.
+  const glm::mat4& v = light_.view();
+  const LightFrustum& fr = light_.frustum();
+  const float range = std::max(fr.far - fr.near, 1e-6f);
+  const glm::vec4 row_z(v[0][2], v[1][2], v[2][2], v[3][2]);
+  return (-row_z - glm::vec4(0.0f, 0.0f, 0.0f, fr.near)) / range;
+}
+
+float DepthReadback::texgenBias(const Frame& f) const {
+  if (!f.params.at("bias.mode").is("texgen")) return 0.0f;
+  const float step = f.params.at("bias.steps").f() / (digits_ == 1 ? 255.0f : 65535.0f);
+  if (linear_ || light_.frustum().directional) return step;  // q = 1: a plain constant
+  // 000's mistake: r - b before the divide by q is b / q after it. Tuned to `steps` at the
+  // light's target, it is more in front of it and less behind, and has no slope term.
+  return step * std::max(glm::distance(f.light.position, f.light.target), 1e-3f);
+}
+
+const Texture& DepthReadback::lookupTexture() const {
+  if (path_ == "read_pixels") return digits_texture_;
+  if (path_ == "copy_texture") return copied_;
+  return linear_ ? light_color_ : light_depth_;
+}
+
+void DepthReadback::bindForLookup(const Frame& f, const Program& program) const {
+  lookupTexture().bind(0);
+  ramp_.bind(1);
+  program.set("uMap", 0);
+  program.set("uRamp", 1);
+  // Depth textures hold depth, not steps: the shader quantizes as glReadPixels would.
+  program.set("uMapIsDepth", !linear_ && path_ != "read_pixels" ? 1 : 0);
+  program.set("uLinear", linear_ ? 1 : 0);
+  program.set("uShadowMatrix", light_.textureMatrix());
+  program.set("uLinearPlane", linearPlane());
+  program.set("uTexgenBias", texgenBias(f));
+}
+
+void DepthReadback::drawInset(const Frame& frame, bool fullscreen) const {
+  if (!inset_ && !fullscreen) return;
+  const Texture& map = lookupTexture();
+  if (!linear_ && path_ != "read_pixels") {
+    const LightFrustum& fr = light_.frustum();
+    frame.drawDepthInset(map, fr.near, fr.far, !fr.directional, fullscreen);
+  } else {
+    frame.drawImageInset(map, fullscreen);
+  }
+}
+
+}  // namespace shadows

@@ -1,0 +1,75 @@
+// Seed 000's shadow map for hardware without depth textures (lessons 06 and 07): the light's
+// depth, offset with glPolygonOffset while it is built, moved into a texture of 8-bit digits
+// (one: Heidrich's dual-texture test; two: McCool's multi-digit test) along one of 000's
+// paths, each timed as its own pass and counted:
+//   read_pixels        glReadPixels as unsigned bytes (or shorts), glTexSubImage2D into an
+//                      8-bit texture: "un-extended OpenGL provides no direct depth copy"
+//   copy_texture       glCopyTexSubImage2D from the depth buffer into a depth texture
+//                      ("fast copies from depth buffer to texture"), quantized when read
+//   render_to_texture  no copy: the light pass's own depth texture, quantized when read
+// Whatever the path, the eye pass sees the same bits (depth_digits.glsl quantizes the two
+// depth-texture paths exactly as the driver's glReadPixels does).
+#pragma once
+
+#include <vector>
+
+#include "light_view.hpp"
+
+namespace shadows {
+
+class DepthReadback {
+ public:
+  // The light view's shadow.* parameters plus map.path, bias.mode, bias.factor, bias.steps,
+  // inset; with `linearChoice`, map.encoding (Heidrich's linear depth in colour).
+  static void declare(Params& params, int digits, bool linearChoice);
+
+  explicit DepthReadback(int digits) : digits_(digits) {}
+  void init();  // programs and ramp textures (context current)
+
+  // The light's view and the map's storage for this frame; true when the map must be
+  // rendered again (see LightView::update).
+  bool prepare(Frame& frame);
+  // The light pass (pass "shadow": casters only, with the bias where bias.mode puts it),
+  // then the move into the lookup texture (pass "readback", counting readback_bytes).
+  void render(Frame& frame);
+
+  // Binds Tex0 (the map) to unit 0 and Tex1 (the ramp) to unit 1 and sets what the eye
+  // shaders of 06/07 read: uMap, uRamp, uMapIsDepth, uLinear, uShadowMatrix, uLinearPlane,
+  // uTexgenBias.
+  void bindForLookup(const Frame& frame, const Program& program) const;
+  // The map over the whole target (view "map") or in a corner, when `inset` is on.
+  void drawInset(const Frame& frame, bool fullscreen = false) const;
+
+  const LightView& light() const { return light_; }
+  bool linear() const { return linear_; }
+  const std::string& path() const { return path_; }
+  long long bytesPerFrame() const {
+    return static_cast<long long>(light_.size().x) * light_.size().y * digits_;
+  }
+  // The 8-bit steps of a read back map (read_pixels path only; empty otherwise): tests
+  // compare them with what the other paths quantize.
+  const std::vector<std::uint8_t>& lastBytes() const { return bytes_; }
+
+ private:
+  void recreate(glm::ivec2 size);
+  void transfer(Frame& frame);
+  glm::vec4 linearPlane() const;
+  float texgenBias(const Frame& frame) const;
+  const Texture& lookupTexture() const;
+
+  int digits_;
+  LightView light_;
+  Program light_program_;
+  Texture ramp_;                       // Tex1: 1D (one digit) or 2D (two digits) ramp
+  Texture light_depth_, light_color_;  // what the light pass renders into
+  std::unique_ptr<Framebuffer> light_target_;
+  Texture digits_texture_;  // read_pixels: R8 or RG8 (big digit in r)
+  Texture copied_;          // copy_texture: GL_DEPTH_COMPONENT24 (R8 for linear depth)
+  std::vector<std::uint8_t> bytes_;
+  std::vector<std::uint16_t> shorts_;
+  glm::ivec2 size_{0};
+  std::string path_, storage_key_;
+  bool linear_ = false, inset_ = true;
+};
+
+}  // namespace shadows

@@ -1,0 +1,49 @@
+// The light's side of every shadow technique that renders from the light: the map's size
+// (shadow.size, shadow.height), the light frustum for that size (fitted to the casters on
+// request), P_light and V_light, and the decision whether a map built from it must be
+// rendered again. What the map is stored in (a depth texture, 8-bit bytes read back, two
+// 8-bit digits) is up to the lesson or to ShadowMap.
+#pragma once
+
+#include "app.hpp"
+
+namespace shadows {
+
+class LightView {
+ public:
+  // shadow.size and shadow.height: the map's texels.
+  static void declareSize(Params& params);
+  // shadow.fit and shadow.cache.
+  static void declareFit(Params& params);
+  // The map size the parameters ask for (height 0 = square).
+  static glm::ivec2 mapSize(const Params& params);
+
+  // Computes this frame's frustum and matrices for a map of `size` texels, and says whether
+  // the map must be rendered (counted as shadow_map_renders): when the light, a caster or
+  // any `extraDirty` bit changed, the cache is off, or `recreated` (new storage).
+  bool update(Frame& frame, glm::ivec2 size, bool recreated,
+              std::uint32_t extraDirty = kDirtyNothing);
+
+  const LightFrustum& frustum() const { return frustum_; }
+  const glm::mat4& projection() const { return projection_; }
+  const glm::mat4& view() const { return view_; }
+  glm::mat4 viewProjection() const { return projection_ * view_; }
+  // B * P_light * V_light: world space to (s, t, r, q).
+  glm::mat4 textureMatrix() const { return shadowTextureMatrix(projection_, view_); }
+  glm::ivec2 size() const { return size_; }
+  // The world size of one texel (along the map's height) at distance d along the light's
+  // axis is x * d + y: a spot's texels grow with distance (x = 2 tan(fov/2) / rows, y = 0),
+  // a directional light's do not (x = 0, y = 2 extent / rows).
+  glm::vec2 texelFootprint() const;
+  float texelWorldSize(float distance) const {
+    const glm::vec2 t = texelFootprint();
+    return t.x * distance + t.y;
+  }
+
+ private:
+  LightFrustum frustum_;
+  glm::mat4 projection_{1.0f}, view_{1.0f};
+  glm::ivec2 size_{0};
+};
+
+}  // namespace shadows
