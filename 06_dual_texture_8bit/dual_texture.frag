@@ -1,0 +1,51 @@
+#version 330 core
+// The eye passes of Heidrich's dual-texture shadow test (seed 000, "Dual-texture Shadow
+// Mapping Approach"), the fixed-function stages written out:
+//   Tex0  the 8-bit map at (s/q, t/q)                      (texgen 1, "intensity texture")
+//   Tex1  a 1D linear ramp at the fragment's light depth    (texgen 2, "Z planar distance in S")
+//   texenv  alpha = a(Tex0) + (1 - a(Tex1)) - 0.5            (EXT_texture_env_combine)
+//   alpha test  glAlphaFunc(GL_GREATER, 0.5), as a discard
+// Pass 1 draws everything dimmed; pass 2 (glDepthFunc(GL_EQUAL)) draws it lit, and the alpha
+// test rejects the shadowed fragments, which keep pass 1's colour.
+#include "lighting.glsl"
+#include "depth_digits.glsl"
+#include "readback_lookup.glsl"
+
+in vec3 vWorld;
+in vec3 vNormal;
+uniform sampler2D uMap;   // Tex0
+uniform sampler1D uRamp;  // Tex1
+uniform int uRampLookup;  // 0: compare with the exact fragment depth instead of Tex1
+uniform vec3 uColor;
+uniform int uPass;    // 1 dimmed, 2 lit (alpha-tested), 0 one value, no test
+uniform int uOutput;  // 0 colour, 1 visibility, 2 Tex1 (ramp), 3 texenv alpha - 0.5
+out vec4 outColor;
+
+float mapSteps() {
+  float v = texture(uMap, mapCoord()).r;
+  return uMapIsDepth == 1 ? depthToSteps(v, 255.0) : floor(v * 255.0 + 0.5);
+}
+
+float fragmentSteps() {
+  float s = fragmentDepth();
+  if (uRampLookup == 1) return floor(texture(uRamp, s).r * 255.0 + 0.5);
+  return min(clamp(s, 0.0, 1.0) * 255.0, 254.5);  // exact, below the cleared map as the ramp is
+}
+
+void main() {
+  vec3 n = normalize(vNormal);
+  float alpha = behindLight() ? 1.0 : texenvAlpha(mapSteps(), fragmentSteps());
+  if (uPass == 2 && !alphaTestPasses(alpha)) discard;
+  if (uOutput == 1) {
+    outColor = vec4(vec3(uPass == 2 ? 1.0 : 0.0), 1.0);
+  } else if (uOutput == 2) {
+    outColor = vec4(vec3(fragmentSteps() / 255.0), 1.0);
+  } else if (uOutput == 3) {
+    // Signed and magnified 64x (one 8-bit step = a quarter of full): green where the map lies beyond the fragment (lit), red where
+    // it does not (shadowed, ties included: the self-shadowing 000 warns about).
+    float d = 64.0 * (alpha - 0.5);
+    outColor = d > 0.0 ? vec4(0.0, min(d, 1.0), 0.0, 1.0) : vec4(max(0.25, min(-d, 1.0)), 0.0, 0.0, 1.0);
+  } else {
+    outColor = vec4(shadeSurface(uColor, vWorld, n, uPass == 2 ? 1.0 : 0.0), 1.0);
+  }
+}

@@ -1,0 +1,132 @@
+// Lesson 06: Heidrich's shadow mapping for hardware without depth textures (seed 000, "An
+// Alternative to Dedicated Shadow Mapping Hardware" .. "Improving Depth Map Precision").
+//
+//   Map:    depth from the light, glPolygonOffset applied while it is built, read back with
+//           glReadPixels as unsigned bytes and loaded into an 8-bit texture (common/
+//           depth_readback: the other paths of 000 are one choice away).
+//   Pass 1: everything dimmed (the light "disabled -or- dimmed substantially").
+//   Pass 2: glDepthFunc(GL_EQUAL), everything lit; Tex0 = the map at (s/q, t/q), Tex1 = a 1D
+//           ramp at the fragment's light depth, alpha = a(Tex0) + (1 - a(Tex1)) - 0.5, and the
+//           alpha test (GL_GREATER, 0.5) rejects the shadowed fragments.
+// Eight bits hold on a frustum confined to the casters and break when it is expanded: that
+// is the point, and lesson 07 is the fix.
+#include <imgui.h>
+
+#include "app.hpp"
+#include "depth_readback.hpp"
+#include "json.hpp"
+
+namespace shadows {
+
+class DualTexture8bit final : public Lesson {
+ public:
+  std::string title() const override { return "Dual-texture shadows: an 8-bit map and a ramp"; }
+  std::string seeds() const override {
+    return "seed 000: An Alternative to Dedicated Shadow Mapping Hardware .. Improving Depth "
+           "Map Precision";
+  }
+  std::vector<std::string> debugViews() const override { return {"map", "ramp", "difference"}; }
+
+  void declare(Params& p) override {
+    DepthReadback::declare(p, /*digits=*/1, /*linearChoice=*/true);
+    p.addBool("ramp.lookup", true,
+              "Tex1 from the 8-bit ramp texture; off: the exact fragment depth");
+    p.addBool("pass.dimmed", true, "pass 1: everything dimmed");
+    p.addBool("pass.lit", true, "pass 2: lit where the alpha test passes");
+    p.addFloat("dimming", 0.4f, 0.0f, 1.0f, "light left in shadow: dimming + (1-dimming)*shade");
+  }
+
+  void init() override {
+    map_.init();
+    eye_ = Program(commonShaderDir() / "readback_eye.vert",
+                   lessonFile(LESSON_DIR, "dual_texture.frag"));
+  }
+
+  void render(Frame& f) override {
+    if (map_.prepare(f)) map_.render(f);
+    if (f.mode == "map") {  // the 8-bit map itself, as the light sees it
+      f.clearTarget(glm::vec3(0.0f));
+      map_.drawInset(f, /*fullscreen=*/true);
+      return;
+    }
+    f.clearTarget();
+    eye_.set("uViewProjection", f.projection * f.view);
+    eye_.set("uRampLookup", f.params.at("ramp.lookup").b() ? 1 : 0);
+    eye_.set("uOutput", outputIndex(f.mode));
+    map_.bindForLookup(f, eye_);
+    f.setLightingUniforms(eye_, f.params.at("dimming").f());
+    if (f.mode == "ramp" || f.mode == "difference") {  // one value per pixel, no test
+      eye_.set("uPass", 0);
+      f.drawObjects(eye_, Objects::All);
+    } else {
+      drawPasses(f);
+    }
+    if (f.mode != "visibility") map_.drawInset(f);
+  }
+
+  void panel(Frame& f) override {
+    const LightFrustum& fr = map_.light().frustum();
+    ImGui::Text("light near %.3f  far %.3f  (far/near %.0f)%s", fr.near, fr.far, fr.far / fr.near,
+                f.params.at("shadow.fit").b() ? " fitted" : "");
+    ImGui::TextDisabled("one 8-bit step = %.4g world units at the far plane", stepAtFar());
+    ImGui::Text("pass 2 lit %lld fragments", lit_fragments_);
+  }
+
+  void report(JsonWriter& json) const override {
+    json.value("light_near_used", map_.light().frustum().near);
+    json.value("light_far_used", map_.light().frustum().far);
+    json.value("step_world_at_far", stepAtFar());
+  }
+
+ private:
+  static int outputIndex(const std::string& mode) {
+    if (mode == "visibility") return 1;
+    if (mode == "ramp") return 2;
+    if (mode == "difference") return 3;
+    return 0;
+  }
+
+  void drawPasses(Frame& f) {
+    {
+      // Pass 1 lays the depth pass 2 must equal; switched off, it still does, in no colour.
+      auto timing = f.measure.pass("pass1");
+      PassState dimmed;
+      dimmed.color_write = f.params.at("pass.dimmed").b();
+      dimmed.apply();
+      eye_.set("uPass", 1);
+      f.drawObjects(eye_, Objects::All);
+    }
+    lit_fragments_ = 0;
+    if (!f.params.at("pass.lit").b()) return;
+    auto timing = f.measure.pass("pass2");
+    PassState lit;
+    lit.depth_func = GL_EQUAL;
+    lit.depth_write = false;
+    lit.apply();
+    eye_.set("uPass", 2);
+    query_.begin();
+    f.drawObjects(eye_, Objects::All);
+    query_.end();
+    lit_fragments_ = query_.result();
+    f.measure.count("pass2_lit_fragments", lit_fragments_);
+    PassState{}.apply();
+  }
+
+  // How far apart, along the light's axis, two depths at the far plane must be to differ in
+  // 8 bits: projective depth crowds its steps near the far plane, linear spreads them evenly.
+  float stepAtFar() const {
+    const LightFrustum& fr = map_.light().frustum();
+    const float range = fr.far - fr.near;
+    if (map_.linear() || fr.directional) return range / 255.0f;
+    return fr.far * fr.far * range / (fr.far * fr.near * 255.0f);
+  }
+
+  DepthReadback map_{1};
+  Program eye_;
+  SamplesPassedQuery query_;
+  long long lit_fragments_ = 0;
+};
+
+SHADOWS_LESSON(DualTexture8bit);
+
+}  // namespace shadows
