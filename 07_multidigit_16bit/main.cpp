@@ -1,0 +1,145 @@
+// Lesson 07: McCool's multi-digit shadow comparison (seed 000, "Improving Depth Map Precision"
+// .. "GeForce/Quadro Precision Extension").
+//
+//   Map:    depth from the light, read back as 16-bit unsigned shorts and stored as two 8-bit
+//           digits (common/depth_readback; GL_LUMINANCE8_ALPHA8 then, RG8 now).
+//   Pass 1: clear the stencil to 0; everything dimmed.
+//   Pass 2: glDepthFunc(GL_EQUAL): lit where bigDigit(map) > bigDigit(fragment), writing
+//           stencil 1 where it lights.
+//   Pass 3: lit where the big digits are equal and the little digit decides, rejecting
+//           stencil 1: those pixels are pass 2's already.
+// "Think about comparing two 2-digit numbers: 54 and 82": the second digit matters only when
+// the first ones are equal. With the same 8-bit hardware, 16 bits of depth.
+#include <imgui.h>
+
+#include "app.hpp"
+#include "depth_readback.hpp"
+#include "json.hpp"
+
+namespace shadows {
+
+class MultiDigit16bit final : public Lesson {
+ public:
+  std::string title() const override { return "Multi-digit shadows: 16 bits as two 8-bit digits"; }
+  std::string seeds() const override {
+    return "seed 000: Improving Depth Map Precision .. GeForce/Quadro Precision Extension";
+  }
+  std::vector<std::string> debugViews() const override {
+    return {"big_digit", "little_digit", "passes"};
+  }
+
+  void declare(Params& p) override {
+    DepthReadback::declare(p, /*digits=*/2, /*linearChoice=*/false);
+    p.addBool("pass.dimmed", true, "pass 1: everything dimmed");
+    p.addBool("pass.big", true, "pass 2: lit where the big digits decide (writes stencil 1)");
+    p.addBool("pass.little", true, "pass 3: lit where the little digit decides (stencil != 1)");
+    p.addFloat("dimming", 0.4f, 0.0f, 1.0f, "light left in shadow: dimming + (1-dimming)*shade");
+  }
+
+  void init() override {
+    map_.init();
+    const auto vertex = commonShaderDir() / "readback_eye.vert";
+    eye_ = Program(vertex, lessonFile(LESSON_DIR, "multidigit.frag"));
+    eye_pass3_ = Program(vertex, lessonFile(LESSON_DIR, "multidigit_pass3.frag"));
+    digits_view_ =
+        Program(commonShaderDir() / "fullscreen.vert", lessonFile(LESSON_DIR, "digits_view.frag"));
+  }
+
+  void render(Frame& f) override {
+    if (map_.prepare(f)) map_.render(f);
+    if (f.mode == "big_digit" || f.mode == "little_digit") {
+      drawDigits(f, f.mode == "little_digit" ? 1 : 0);
+      return;
+    }
+    f.clearTarget();  // colour, depth, and the stencil to 0
+    const int output = f.mode == "visibility" ? 1 : f.mode == "passes" ? 2 : 0;
+    for (const Program* program : {&eye_, &eye_pass3_}) {
+      program->set("uViewProjection", f.projection * f.view);
+      program->set("uOutput", output);
+      map_.bindForLookup(f, *program);
+      f.setLightingUniforms(*program, f.params.at("dimming").f());
+    }
+    drawPasses(f, output == 2);
+    if (f.mode != "visibility") map_.drawInset(f);
+  }
+
+  void panel(Frame& f) override {
+    const LightFrustum& fr = map_.light().frustum();
+    ImGui::Text("light near %.3f  far %.3f  (far/near %.0f)%s", fr.near, fr.far, fr.far / fr.near,
+                f.params.at("shadow.fit").b() ? " fitted" : "");
+    ImGui::Text("lit by pass 2 %lld, by pass 3 %lld fragments", lit_[0], lit_[1]);
+  }
+
+  void report(JsonWriter& json) const override {
+    json.value("light_near_used", map_.light().frustum().near);
+    json.value("light_far_used", map_.light().frustum().far);
+  }
+
+ private:
+  void drawPasses(Frame& f, bool additive) {
+    const Params& p = f.params;
+    {
+      // Pass 1 lays the depth passes 2 and 3 must equal; switched off, in no colour.
+      auto timing = f.measure.pass("pass1");
+      PassState dimmed;
+      dimmed.color_write = p.at("pass.dimmed").b();
+      dimmed.apply();
+      eye_.set("uPass", 1);
+      f.drawObjects(eye_, Objects::All);
+    }
+    PassState lit;
+    lit.depth_func = GL_EQUAL;
+    lit.depth_write = false;
+    lit.stencil_test = true;
+    lit.blend = additive;  // the "passes" view adds, so a pixel lit twice would show
+    lit.blend_dst = GL_ONE;
+    {
+      // Off, pass 2 still marks its pixels, so pass 3 alone shows only its own share.
+      auto timing = f.measure.pass("pass2");
+      PassState big = lit;
+      big.color_write = p.at("pass.big").b();
+      big.stencil_func = GL_ALWAYS;
+      big.stencil_ref = 1;
+      big.stencil_pass = GL_REPLACE;
+      big.apply();
+      eye_.set("uPass", 2);
+      lit_[0] = countLit(f, eye_, 0);
+    }
+    lit_[1] = 0;
+    if (p.at("pass.little").b()) {
+      auto timing = f.measure.pass("pass3");
+      PassState little = lit;
+      little.stencil_func = GL_NOTEQUAL;  // passes where 1 != stencil
+      little.stencil_ref = 1;
+      little.apply();
+      eye_pass3_.set("uPass", 3);
+      lit_[1] = countLit(f, eye_pass3_, 1);
+    }
+    f.measure.count("pass2_lit_fragments", lit_[0]);
+    f.measure.count("pass3_lit_fragments", lit_[1]);
+    PassState{}.apply();
+  }
+
+  long long countLit(const Frame& f, const Program& program, int index) {
+    queries_[index].begin();
+    f.drawObjects(program, Objects::All);
+    queries_[index].end();
+    return queries_[index].result();
+  }
+
+  void drawDigits(const Frame& f, int digit) {
+    f.clearTarget(glm::vec3(0.0f));
+    map_.bindForLookup(f, digits_view_);
+    digits_view_.set("uDigit", digit);
+    f.drawFullscreen(digits_view_);
+  }
+
+  DepthReadback map_{2};
+  Program eye_, eye_pass3_, digits_view_;
+  SamplesPassedQuery queries_[2];
+  long long lit_[2] = {0, 0};
+};
+
+SHADOWS_LESSON(MultiDigit16bit);
+
+}  // namespace shadows
