@@ -23,7 +23,7 @@ out vec4 outColor;
 
 float mapSteps() {
   float v = texture(uMap, mapCoord()).r;
-  return uMapIsDepth == 1 ? depthToSteps(v, 255.0) : floor(v * 255.0 + 0.5);
+  return uMapIsDepth == 1 ? depthToSteps(v, 255.0, uReadbackNearest) : floor(v * 255.0 + 0.5);
 }
 
 float fragmentSteps() {

@@ -6,6 +6,7 @@
 in vec2 vUv;
 uniform sampler2D uMap;
 uniform int uMapIsDepth;
+uniform int uReadbackNearest;
 uniform int uDigit;  // 0 big, 1 little
 out vec4 outColor;
 
@@ -17,7 +18,7 @@ void main() {
   vec4 v = texture(uMap, vUv);
   vec2 digits = floor(v.rg * 255.0 + 0.5);
   if (uMapIsDepth == 1) {
-    float steps = depthToSteps(v.r, 65535.0);
+    float steps = depthToSteps(v.r, 65535.0, uReadbackNearest);
     digits = vec2(bigDigit(steps), littleDigit(steps));
   }
   if (uDigit == 1) {

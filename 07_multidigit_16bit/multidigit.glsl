@@ -23,7 +23,7 @@ out vec4 outColor;
 vec2 mapDigits() {
   vec4 v = texture(uMap, mapCoord());
   if (uMapIsDepth == 1) {
-    float steps = depthToSteps(v.r, 65535.0);
+    float steps = depthToSteps(v.r, 65535.0, uReadbackNearest);
     return vec2(bigDigit(steps), littleDigit(steps));
   }
   return floor(v.rg * 255.0 + 0.5);

@@ -10,6 +10,7 @@ using glm::clamp;
 using glm::floor;
 using glm::fract;
 using glm::min;
+using glm::roundEven;
 using glm::vec2;
 
 #include "shaders/depth_digits.glsl"

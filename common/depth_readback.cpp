@@ -33,7 +33,28 @@ void DepthReadback::declare(Params& p, int digits, bool linearChoice) {
   p.addBool("inset", true, "show the map in a corner");
 }
 
+namespace {
+// Whether glReadPixels rounds a depth to the nearest step or down (the GL allows both): clear
+// a 1x1 depth buffer to 100.7 steps and read it back.
+bool driverReadbackRoundsToNearest(int digits) {
+  const Texture depth = Texture::depth(1, 1, 24);
+  Framebuffer target;
+  target.attachDepth(depth);
+  const double top = digits == 1 ? 255.0 : 65535.0;
+  glClearDepth(100.7 / top);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glClearDepth(1.0);
+  std::uint16_t value[2] = {0, 0};
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, digits == 1 ? GL_UNSIGNED_BYTE : GL_UNSIGNED_SHORT,
+               value);
+  const int steps = digits == 1 ? reinterpret_cast<std::uint8_t*>(value)[0] : value[0];
+  return steps == 101;
+}
+}  // namespace
+
 void DepthReadback::init() {
+  nearest_ = driverReadbackRoundsToNearest(digits_);
   const auto dir = commonShaderDir();
   light_program_ = Program(dir / "readback_light.vert", dir / "readback_light.frag");
   if (digits_ == 1) {
@@ -217,6 +238,7 @@ void DepthReadback::bindForLookup(const Frame& f, const Program& program) const 
   program.set("uRamp", 1);
   // Depth textures hold depth, not steps: the shader quantizes as glReadPixels would.
   program.set("uMapIsDepth", !linear_ && path_ != "read_pixels" ? 1 : 0);
+  program.set("uReadbackNearest", nearest_ ? 1 : 0);
   program.set("uLinear", linear_ ? 1 : 0);
   program.set("uShadowMatrix", light_.textureMatrix());
   program.set("uLinearPlane", linearPlane());

@@ -43,6 +43,8 @@ class DepthReadback {
   const LightView& light() const { return light_; }
   bool linear() const { return linear_; }
   const std::string& path() const { return path_; }
+  // Whether this driver's glReadPixels rounds depth to the nearest step (else it truncates).
+  bool readbackRoundsToNearest() const { return nearest_; }
   long long bytesPerFrame() const {
     return static_cast<long long>(light_.size().x) * light_.size().y * digits_;
   }
@@ -70,6 +72,7 @@ class DepthReadback {
   glm::ivec2 size_{0};
   std::string path_, storage_key_;
   bool linear_ = false, inset_ = true;
+  bool nearest_ = true;  // whether glReadPixels rounds to nearest on this driver (depthToSteps)
 };
 
 }  // namespace shadows

@@ -96,6 +96,25 @@ inline std::vector<std::vector<std::string>> shadowMapSliderExtremes() {
           {"dimming=1"}};
 }
 
+// The ends of the sliders lessons 06 and 07 share (common/depth_readback: map size, light
+// frustum, path, bias), as settings lists for expectFiniteAndErrorFree.
+inline std::vector<std::vector<std::string>> readbackMapSliderExtremes() {
+  return {{"shadow.size=64", "shadow.height=4096", "map.path=copy_texture"},
+          {"shadow.size=4096", "map.path=render_to_texture"},
+          {"light.near=0.001", "light.far=1000", "shadow.fit=false"},
+          {"light.near=100", "light.far=0.01", "shadow.fit=false"},  // far < near: sanitized
+          {"bias.steps=0", "bias.factor=0"},
+          {"bias.factor=20", "bias.mode=texgen"},
+          {"light.fov=5"},
+          {"light.fov=160"},
+          {"light.pos=0,0.5,0", "light.target=0,0.5,0"},   // degenerate: eye == target
+          {"light.pos=-50,0.01,0", "light.target=0,0,0"},  // grazing
+          {"light.type=directional", "light.extent=0.5"},
+          {"camera.pos=0,0.6,0", "camera.target=0,0.6,0"},
+          {"dimming=0"},
+          {"dimming=1"}};
+}
+
 // Renders every `view` the lesson offers: no GL error in any, no two alike (each view shows
 // something of its own), and no NaN or Inf in what the lesson draws.
 inline void expectEveryViewCleanAndDistinct(Runner& runner, const std::string& label = {}) {

@@ -4,10 +4,13 @@
 // Values are in map steps: 0..255 for one 8-bit digit, 0..65535 for two.
 
 // What glReadPixels(GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE or GL_UNSIGNED_SHORT) makes of a
-// depth in [0, 1] on this driver (`top` = 255 or 65535). The paths that never read back
-// (copy_texture, render_to_texture) quantize with this, so every path sees the same bits.
-float depthToSteps(float depth, float top) {
-  return floor(clamp(depth, 0.0f, 1.0f) * top + 0.5f);
+// depth in [0, 1] (`top` = 255 or 65535). The GL lets a driver take either neighbouring step,
+// so DepthReadback asks the driver (`nearest` = 1: to nearest, ties to even; 0: down). Mesa
+// 22 truncates bytes and rounds shorts. The paths that never read back (copy_texture,
+// render_to_texture) quantize with this, so every path sees the same bits.
+float depthToSteps(float depth, float top, int nearest) {
+  float steps = clamp(depth, 0.0f, 1.0f) * top;
+  return nearest == 1 ? roundEven(steps) : floor(steps);
 }
 
 // Tex1 of the dual-texture slides: a 1D ramp of 256 texels read NEAREST at s, texel i

@@ -1,6 +1,7 @@
 // What lessons 06 and 07 share in their eye passes: where a fragment looks in the map, and
 // its own light depth in [0, 1] (Tex1's texgen), both as the fixed-function texgen made them.
 uniform int uMapIsDepth;    // copy_texture / render_to_texture: a depth texture to quantize
+uniform int uReadbackNearest;  // how this driver's glReadPixels rounds (depthToSteps)
 uniform int uLinear;        // Heidrich's linear depth: S from the eye-planar texgen
 uniform float uTexgenBias;  // bias.mode=texgen: subtracted from r before the divide by q
 

@@ -1,0 +1,159 @@
+// Lesson 06 end to end, headless: usable on a frustum confined to the casters, broken on an
+// expanded one (the lesson's point), every copy path seeing the same bits, and the slides'
+// mistakes measurably worse than what they recommend.
+#include "harness.hpp"
+
+namespace shadows {
+namespace {
+
+using testing::label;
+using testing::startLesson;
+
+const std::string kLesson = "06_dual_texture_8bit";
+const std::vector<std::string> kExpanded = {"shadow.fit=false", "light.near=0.1", "light.far=500"};
+
+std::vector<std::string> with(std::vector<std::string> sets, const std::vector<std::string>& more) {
+  sets.insert(sets.end(), more.begin(), more.end());
+  return sets;
+}
+
+ErrorMetrics measure(const std::vector<std::string>& sets) {
+  auto runner = startLesson(kLesson, sets);
+  runner->renderFrame();
+  EXPECT_EQ(runner->glErrors(), 0) << label(sets);
+  return runner->measureError().metrics;
+}
+
+TEST(Lesson06, SnapshotMatchesTheGolden) {
+  auto runner = startLesson(kLesson, {});
+  runner->renderFrame();
+  testing::expectMatchesGolden(runner->readImage(), kLesson);
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
+TEST(Lesson06, ConfinedFrustumIsAUsableShadowOnEveryPreset) {
+  // 000: "yes, for some simple scenes ... relatively close together". The defaults fit the
+  // frustum to the casters; at 1024² the bar is <= 0.5% false shadow, <= 1% false lit.
+  for (const std::string& scene : scenePresets()) {
+    const std::vector<std::string> sets = {"scene=" + scene, "shadow.size=1024"};
+    const ErrorMetrics e = measure(sets);
+    EXPECT_LE(e.false_shadow_pct, 0.5) << label(sets);
+    EXPECT_LE(e.false_lit_pct, 1.0) << label(sets);
+    EXPECT_GT(e.counted_pixels, 5000) << label(sets);
+    EXPECT_EQ(e.nonfinite_pixels, 0) << label(sets);
+  }
+}
+
+TEST(Lesson06, ExpandedFrustumBreaksTheEightBitShadow) {
+  // 000: "Frustum expanded out considerably breaks down the shadows". Near 0.1, far 500: the
+  // whole scene falls into a few 8-bit steps of projective depth.
+  for (const std::string& scene : scenePresets()) {
+    const std::vector<std::string> sets = with({"scene=" + scene}, kExpanded);
+    const ErrorMetrics e = measure(sets);
+    EXPECT_GE(e.false_shadow_pct + e.false_lit_pct, 5.0) << label(sets);
+  }
+}
+
+TEST(Lesson06, LinearDepthHoldsBetterThanProjectiveOnTheExpandedFrustum) {
+  // 000, "Improving Depth Map Precision": linear depth spreads the 256 steps evenly instead
+  // of crowding them at the far plane.
+  const ErrorMetrics projective = measure(kExpanded);
+  const ErrorMetrics linear = measure(with(kExpanded, {"map.encoding=linear"}));
+  const double p = projective.false_shadow_pct + projective.false_lit_pct;
+  const double l = linear.false_shadow_pct + linear.false_lit_pct;
+  EXPECT_LT(l, 0.6 * p) << "linear " << l << "% vs projective " << p << "%";
+}
+
+TEST(Lesson06, EveryCopyPathSeesTheSameEightBits) {
+  // read_pixels quantizes in the driver, the two depth-texture paths in the shader
+  // (depthToSteps): the visibility must be identical, bit for bit. Without bias every lit
+  // surface is a near-tie with its own texel, so one step off anywhere would show.
+  for (const char* encoding : {"projective", "linear"}) {
+    std::vector<float> reference;
+    for (const char* path : {"read_pixels", "copy_texture", "render_to_texture"}) {
+      const auto sets = std::vector<std::string>{std::string("map.encoding=") + encoding,
+                                                 std::string("map.path=") + path, "bias.steps=0",
+                                                 "bias.factor=0"};
+      auto runner = startLesson(kLesson, sets);
+      runner->renderFrame();
+      const std::vector<float> visibility = runner->renderVisibility();
+      EXPECT_EQ(runner->glErrors(), 0) << label(sets);
+      if (reference.empty()) {
+        reference = visibility;
+        continue;
+      }
+      size_t differing = 0;
+      for (size_t i = 0; i < visibility.size(); ++i) differing += visibility[i] != reference[i];
+      EXPECT_EQ(differing, 0u) << label(sets);
+    }
+  }
+}
+
+TEST(Lesson06, ReadbackMovesExactlyOneByteATexelAndTheOtherPathsNone) {
+  auto runner = startLesson(kLesson, {"shadow.size=512", "shadow.height=256"});
+  runner->renderFrame();
+  const auto& counts = runner->measure().lastFrameCounts();
+  EXPECT_EQ(counts.at("readback_bytes"), 512 * 256);
+  EXPECT_EQ(runner->measure().lastFrameWork().count("readback"), 1u);
+  ASSERT_EQ(runner->params().set("map.path", "copy_texture"), "");
+  runner->renderFrame();
+  EXPECT_EQ(runner->measure().lastFrameCounts().count("readback_bytes"), 0u);
+  EXPECT_EQ(runner->measure().lastFrameCounts().at("copied_texels"), 512 * 256);
+  ASSERT_EQ(runner->params().set("map.path", "render_to_texture"), "");
+  runner->renderFrame();
+  EXPECT_EQ(runner->measure().lastFrameWork().count("readback"), 0u) << "no copy at all";
+  // A static frame renders no map and moves nothing.
+  ASSERT_EQ(runner->params().set("map.path", "read_pixels"), "");
+  runner->renderFrame();
+  runner->renderFrame();
+  EXPECT_EQ(runner->measure().lastFrameCounts().at("shadow_map_renders"), 0);
+  EXPECT_EQ(runner->measure().lastFrameCounts().count("readback_bytes"), 0u);
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
+TEST(Lesson06, TexgenBiasIsTheMistakeTheSlidesSayItIs) {
+  // 000: "biases in the texgen transform do not work"; the same number of steps as a
+  // polygon offset applied while the map is built leaves acne where slopes are steep.
+  const ErrorMetrics offset = measure({});
+  const ErrorMetrics texgen = measure({"bias.mode=texgen"});
+  EXPECT_GT(texgen.false_shadow_pct, 1.0);
+  EXPECT_GT(texgen.false_shadow_pct, 10.0 * offset.false_shadow_pct + 0.5);
+}
+
+TEST(Lesson06, WithoutBiasNearEqualityShadowsTheLitSurfaces) {
+  // 000: "fragments are likely to shadow themselves"; the strict alpha test turns every tie
+  // into shadow.
+  const ErrorMetrics none = measure({"bias.steps=0", "bias.factor=0"});
+  EXPECT_GT(none.false_shadow_pct, 5.0);
+}
+
+TEST(Lesson06, PassTwoLightsOnlyWhatTheAlphaTestPasses) {
+  auto runner = startLesson(kLesson, {});
+  runner->renderFrame();
+  const long long lit = runner->measure().lastFrameCounts().at("pass2_lit_fragments");
+  EXPECT_GT(lit, 10000);
+  // Everything lit: no pixel of the visibility is shadowed.
+  const std::vector<float> visibility = runner->renderVisibility();
+  size_t lit_pixels = 0;
+  for (float v : visibility) lit_pixels += v == 1.0f;  // the sky reads 0.55
+  EXPECT_EQ(static_cast<long long>(lit_pixels), lit) << "one lit fragment per lit pixel";
+  // Pass 2 off: the dimmed pass alone, nothing lit.
+  ASSERT_EQ(runner->params().set("pass.lit", "false"), "");
+  runner->renderFrame();
+  EXPECT_EQ(runner->measure().lastFrameWork().count("pass2"), 0u);
+}
+
+TEST(Lesson06, EveryViewRendersCleanAndDistinct) {
+  auto runner = startLesson(kLesson, {});
+  testing::expectEveryViewCleanAndDistinct(*runner);
+}
+
+TEST(Lesson06, SliderExtremesStayFiniteAndErrorFree) {
+  testing::expectFiniteAndErrorFree(kLesson, testing::readbackMapSliderExtremes());
+  testing::expectFiniteAndErrorFree(
+      kLesson, {{"map.encoding=linear", "map.path=copy_texture", "bias.steps=64"},
+                {"map.encoding=linear", "map.path=render_to_texture", "ramp.lookup=false"}});
+}
+
+}  // namespace
+}  // namespace shadows
