@@ -5,8 +5,8 @@
 //   Tex1  a 1D linear ramp at the fragment's light depth    (texgen 2, "Z planar distance in S")
 //   texenv  alpha = a(Tex0) + (1 - a(Tex1)) - 0.5            (EXT_texture_env_combine)
 //   alpha test  glAlphaFunc(GL_GREATER, 0.5), as a discard
-// Pass 1 draws everything dimmed; pass 2 (glDepthFunc(GL_EQUAL)) draws it lit, and the alpha
-// test rejects the shadowed fragments, which keep pass 1's colour.
+// Compiled once per pass (PASS 1, 2, or 0 for the one-value views), so each pass runs only
+// its own stages: pass 1 looks nothing up, pass 2 tests, the views show a value untested.
 #include "lighting.glsl"
 #include "depth_digits.glsl"
 #include "readback_lookup.glsl"
@@ -17,8 +17,7 @@ uniform sampler2D uMap;   // Tex0
 uniform sampler1D uRamp;  // Tex1
 uniform int uRampLookup;  // 0: compare with the exact fragment depth instead of Tex1
 uniform vec3 uColor;
-uniform int uPass;    // 1 dimmed, 2 lit (alpha-tested), 0 one value, no test
-uniform int uOutput;  // 0 colour, 1 visibility, 2 Tex1 (ramp), 3 texenv alpha - 0.5
+uniform int uOutput;  // 0 colour, 1 visibility; views: 2 Tex1 (ramp), 3 texenv alpha - 0.5
 out vec4 outColor;
 
 float mapSteps() {
@@ -32,20 +31,30 @@ float fragmentSteps() {
   return min(clamp(s, 0.0, 1.0) * 255.0, 254.5);  // exact, below the cleared map as the ramp is
 }
 
+float alpha() {
+  return behindLight() ? 1.0 : texenvAlpha(mapSteps(), fragmentSteps());
+}
+
 void main() {
-  vec3 n = normalize(vNormal);
-  float alpha = behindLight() ? 1.0 : texenvAlpha(mapSteps(), fragmentSteps());
-  if (uPass == 2 && !alphaTestPasses(alpha)) discard;
-  if (uOutput == 1) {
-    outColor = vec4(vec3(uPass == 2 ? 1.0 : 0.0), 1.0);
-  } else if (uOutput == 2) {
+#if PASS == 1
+  // "Render scene with light disabled -or- dimmed substantially and specular light color of
+  // zero": no texture at all.
+  outColor = uOutput == 1 ? vec4(vec3(0.0), 1.0)
+                          : vec4(shadeSurface(uColor, vWorld, normalize(vNormal), 0.0), 1.0);
+#elif PASS == 2
+  // "Enable the light source, un-rejected pixels = unshadowed".
+  if (!alphaTestPasses(alpha())) discard;
+  outColor = uOutput == 1 ? vec4(1.0)
+                          : vec4(shadeSurface(uColor, vWorld, normalize(vNormal), 1.0), 1.0);
+#else
+  if (uOutput == 2) {
     outColor = vec4(vec3(fragmentSteps() / 255.0), 1.0);
-  } else if (uOutput == 3) {
-    // Signed and magnified 64x (one 8-bit step = a quarter of full): green where the map lies beyond the fragment (lit), red where
-    // it does not (shadowed, ties included: the self-shadowing 000 warns about).
-    float d = 64.0 * (alpha - 0.5);
-    outColor = d > 0.0 ? vec4(0.0, min(d, 1.0), 0.0, 1.0) : vec4(max(0.25, min(-d, 1.0)), 0.0, 0.0, 1.0);
   } else {
-    outColor = vec4(shadeSurface(uColor, vWorld, n, uPass == 2 ? 1.0 : 0.0), 1.0);
+    // Signed and magnified 64x (one 8-bit step = a quarter of full): green where the map
+    // lies beyond the fragment (lit), red where it does not (shadowed, ties included: the
+    // self-shadowing 000 warns about).
+    float d = 64.0 * (alpha() - 0.5);
+    outColor = d > 0.0 ? vec4(0.0, min(d, 1.0), 0.0, 1.0) : vec4(max(0.25, min(-d, 1.0)), 0.0, 0.0, 1.0);
   }
+#endif
 }

@@ -38,8 +38,11 @@ class DualTexture8bit final : public Lesson {
 
   void init() override {
     map_.init();
-    eye_ = Program(commonShaderDir() / "readback_eye.vert",
-                   lessonFile(LESSON_DIR, "dual_texture.frag"));
+    const auto vertex = commonShaderDir() / "readback_eye.vert";
+    const auto fragment = lessonFile(LESSON_DIR, "dual_texture.frag");
+    for (int pass = 0; pass < 3; ++pass) {
+      passes_[pass] = Program(vertex, fragment, {"PASS " + std::to_string(pass)});
+    }
   }
 
   void render(Frame& f) override {
@@ -50,14 +53,15 @@ class DualTexture8bit final : public Lesson {
       return;
     }
     f.clearTarget();
-    eye_.set("uViewProjection", f.projection * f.view);
-    eye_.set("uRampLookup", f.params.at("ramp.lookup").b() ? 1 : 0);
-    eye_.set("uOutput", outputIndex(f.mode));
-    map_.bindForLookup(f, eye_);
-    f.setLightingUniforms(eye_, f.params.at("dimming").f());
+    for (const Program& program : passes_) {
+      program.set("uViewProjection", f.projection * f.view);
+      program.set("uRampLookup", f.params.at("ramp.lookup").b() ? 1 : 0);
+      program.set("uOutput", outputIndex(f.mode));
+      map_.bindForLookup(f, program);
+      f.setLightingUniforms(program, f.params.at("dimming").f());
+    }
     if (f.mode == "ramp" || f.mode == "difference") {  // one value per pixel, no test
-      eye_.set("uPass", 0);
-      f.drawObjects(eye_, Objects::All);
+      f.drawObjects(passes_[0], Objects::All);
     } else {
       drawPasses(f);
     }
@@ -93,8 +97,7 @@ class DualTexture8bit final : public Lesson {
       PassState dimmed;
       dimmed.color_write = f.params.at("pass.dimmed").b();
       dimmed.apply();
-      eye_.set("uPass", 1);
-      f.drawObjects(eye_, Objects::All);
+      f.drawObjects(passes_[1], Objects::All);
     }
     lit_fragments_ = 0;
     if (!f.params.at("pass.lit").b()) return;
@@ -103,9 +106,8 @@ class DualTexture8bit final : public Lesson {
     lit.depth_func = GL_EQUAL;
     lit.depth_write = false;
     lit.apply();
-    eye_.set("uPass", 2);
     query_.begin();
-    f.drawObjects(eye_, Objects::All);
+    f.drawObjects(passes_[2], Objects::All);
     query_.end();
     lit_fragments_ = query_.result();
     f.measure.count("pass2_lit_fragments", lit_fragments_);
@@ -122,7 +124,7 @@ class DualTexture8bit final : public Lesson {
   }
 
   DepthReadback map_{1};
-  Program eye_;
+  Program passes_[3];  // dual_texture.frag compiled as PASS 0 (the views), 1 and 2
   SamplesPassedQuery query_;
   long long lit_fragments_ = 0;
 };

@@ -39,8 +39,10 @@ class MultiDigit16bit final : public Lesson {
   void init() override {
     map_.init();
     const auto vertex = commonShaderDir() / "readback_eye.vert";
-    eye_ = Program(vertex, lessonFile(LESSON_DIR, "multidigit.frag"));
-    eye_pass3_ = Program(vertex, lessonFile(LESSON_DIR, "multidigit_pass3.frag"));
+    const auto fragment = lessonFile(LESSON_DIR, "multidigit.frag");
+    passes_[0] = Program(vertex, fragment, {"PASS 1"});
+    passes_[1] = Program(vertex, fragment, {"PASS 2"});
+    passes_[2] = Program(vertex, lessonFile(LESSON_DIR, "multidigit_pass3.frag"), {"PASS 3"});
     digits_view_ =
         Program(commonShaderDir() / "fullscreen.vert", lessonFile(LESSON_DIR, "digits_view.frag"));
   }
@@ -48,19 +50,21 @@ class MultiDigit16bit final : public Lesson {
   void render(Frame& f) override {
     if (map_.prepare(f)) map_.render(f);
     if (f.mode == "big_digit" || f.mode == "little_digit") {
-      drawDigits(f, f.mode == "little_digit" ? 1 : 0);
+      f.clearTarget(glm::vec3(0.0f));
+      drawDigits(f, f.mode == "little_digit" ? 1 : 0, /*inset=*/false);
       return;
     }
     f.clearTarget();  // colour, depth, and the stencil to 0
     const int output = f.mode == "visibility" ? 1 : f.mode == "passes" ? 2 : 0;
-    for (const Program* program : {&eye_, &eye_pass3_}) {
-      program->set("uViewProjection", f.projection * f.view);
-      program->set("uOutput", output);
-      map_.bindForLookup(f, *program);
-      f.setLightingUniforms(*program, f.params.at("dimming").f());
+    for (const Program& program : passes_) {
+      program.set("uViewProjection", f.projection * f.view);
+      program.set("uOutput", output);
+      map_.bindForLookup(f, program);
+      f.setLightingUniforms(program, f.params.at("dimming").f());
     }
     drawPasses(f, output == 2);
-    if (f.mode != "visibility") map_.drawInset(f);
+    // The inset: the little digit, "here is where the information is".
+    if (f.mode != "visibility" && f.params.at("inset").b()) drawDigits(f, 1, /*inset=*/true);
   }
 
   void panel(Frame& f) override {
@@ -84,8 +88,7 @@ class MultiDigit16bit final : public Lesson {
       PassState dimmed;
       dimmed.color_write = p.at("pass.dimmed").b();
       dimmed.apply();
-      eye_.set("uPass", 1);
-      f.drawObjects(eye_, Objects::All);
+      f.drawObjects(passes_[0], Objects::All);
     }
     PassState lit;
     lit.depth_func = GL_EQUAL;
@@ -102,8 +105,7 @@ class MultiDigit16bit final : public Lesson {
       big.stencil_ref = 1;
       big.stencil_pass = GL_REPLACE;
       big.apply();
-      eye_.set("uPass", 2);
-      lit_[0] = countLit(f, eye_, 0);
+      lit_[0] = countLit(f, passes_[1], 0);
     }
     lit_[1] = 0;
     if (p.at("pass.little").b()) {
@@ -112,8 +114,7 @@ class MultiDigit16bit final : public Lesson {
       little.stencil_func = GL_NOTEQUAL;  // passes where 1 != stencil
       little.stencil_ref = 1;
       little.apply();
-      eye_pass3_.set("uPass", 3);
-      lit_[1] = countLit(f, eye_pass3_, 1);
+      lit_[1] = countLit(f, passes_[2], 1);
     }
     f.measure.count("pass2_lit_fragments", lit_[0]);
     f.measure.count("pass3_lit_fragments", lit_[1]);
@@ -127,15 +128,15 @@ class MultiDigit16bit final : public Lesson {
     return queries_[index].result();
   }
 
-  void drawDigits(const Frame& f, int digit) {
-    f.clearTarget(glm::vec3(0.0f));
+  void drawDigits(const Frame& f, int digit, bool inset) {
     map_.bindForLookup(f, digits_view_);
     digits_view_.set("uDigit", digit);
-    f.drawFullscreen(digits_view_);
+    f.drawFullscreen(digits_view_, inset);
   }
 
   DepthReadback map_{2};
-  Program eye_, eye_pass3_, digits_view_;
+  Program passes_[3];  // PASS 1, 2 (multidigit.frag) and 3 (its early-tests twin)
+  Program digits_view_;
   SamplesPassedQuery queries_[2];
   long long lit_[2] = {0, 0};
 };

@@ -1,7 +1,8 @@
 // The eye passes of McCool's multi-digit comparison (seed 000, "GeForce/Quadro Precision
-// Extension"), the register-combiner stages written out:
+// Extension"), the register-combiner stages written out, compiled once per pass (PASS 1-3):
 //   Tex0  the map's two 8-bit digits at (s/q, t/q) (GL_LUMINANCE8_ALPHA8 then, RG8 now)
-//   Tex1  a 2D ramp, linear along both axes, at (s, 256 s): the fragment's two digits
+//   Tex1  pass 2: a 1D linear ramp at s ("2nd pass just requires a linear 1D texture");
+//         pass 3: a 2D ramp, linear along both axes, at (s, 256 s): both digits
 //   pass 1  everything dimmed
 //   pass 2  lit where bigDigit(map) > bigDigit(fragment); writes stencil 1
 //   pass 3  lit where the big digits leave it to the little ones: alpha = littleDigit(map) -
@@ -13,10 +14,10 @@
 
 in vec3 vWorld;
 in vec3 vNormal;
-uniform sampler2D uMap;   // Tex0: big digit in r, little digit in g
-uniform sampler2D uRamp;  // Tex1
+uniform sampler2D uMap;       // Tex0: big digit in r, little digit in g
+uniform sampler1D uRampBig;   // Tex1 of pass 2
+uniform sampler2D uRamp;      // Tex1 of pass 3
 uniform vec3 uColor;
-uniform int uPass;    // 1, 2 or 3
 uniform int uOutput;  // 0 colour, 1 visibility, 2 which pass lit (1 grey, 2 green, 3 blue)
 out vec4 outColor;
 
@@ -29,24 +30,28 @@ vec2 mapDigits() {
   return floor(v.rg * 255.0 + 0.5);
 }
 
-vec2 fragmentDigits() {
-  float s = clamp(fragmentDepth(), 0.0, 1.0 - 0.5 / 65536.0);  // as rampDigits clamps
-  return floor(texture(uRamp, vec2(s, 256.0 * s)).rg * 255.0 + 0.5);
+// The fragment's light depth, stopping half a 16-bit step short of 1 as rampDigits does.
+float rampS() {
+  return clamp(fragmentDepth(), 0.0, 1.0 - 0.5 / 65536.0);
+}
+
+vec4 passColor(float shade, vec4 passesView) {
+  if (uOutput == 1) return vec4(vec3(shade), 1.0);
+  if (uOutput == 2) return passesView;
+  return vec4(shadeSurface(uColor, vWorld, normalize(vNormal), shade), 1.0);
 }
 
 void main() {
-  if (uPass == 2 && !(behindLight() || bigDigitPassLights(mapDigits(), fragmentDigits()))) {
-    discard;
-  }
-  if (uPass == 3 && (behindLight() || littleDigitPassAlpha(mapDigits(), fragmentDigits()) <= 0.0)) {
-    discard;
-  }
-  if (uOutput == 1) {
-    outColor = vec4(vec3(uPass == 1 ? 0.0 : 1.0), 1.0);
-  } else if (uOutput == 2) {
-    outColor = uPass == 1 ? vec4(0.15, 0.15, 0.15, 1.0)
-                          : uPass == 2 ? vec4(0.0, 0.8, 0.0, 0.0) : vec4(0.0, 0.0, 0.8, 0.0);
-  } else {
-    outColor = vec4(shadeSurface(uColor, vWorld, normalize(vNormal), uPass == 1 ? 0.0 : 1.0), 1.0);
-  }
+#if PASS == 1
+  outColor = passColor(0.0, vec4(0.15, 0.15, 0.15, 1.0));
+#elif PASS == 2
+  float fragmentBig = floor(texture(uRampBig, rampS()).r * 255.0 + 0.5);
+  if (!(behindLight() || bigDigitPassLights(mapDigits(), vec2(fragmentBig, 0.0)))) discard;
+  outColor = passColor(1.0, vec4(0.0, 0.8, 0.0, 0.0));
+#else
+  float s = rampS();
+  vec2 fragment = floor(texture(uRamp, vec2(s, 256.0 * s)).rg * 255.0 + 0.5);
+  if (behindLight() || littleDigitPassAlpha(mapDigits(), fragment) <= 0.0) discard;
+  outColor = passColor(1.0, vec4(0.0, 0.0, 0.8, 0.0));
+#endif
 }

@@ -236,18 +236,21 @@ void Frame::drawImageInset(const Texture& image, bool fullscreen) const {
   runner.drawImageInset(*this, image, fullscreen);
 }
 
-void Frame::drawFullscreen(const Program& program) const {
-  runner.drawFullscreen(*this, program);
+void Frame::drawFullscreen(const Program& program, bool inset) const {
+  runner.drawFullscreen(*this, program, inset);
 }
 
-void Runner::drawFullscreen(const Frame& frame, const Program& program) const {
+void Runner::drawFullscreen(const Frame& frame, const Program& program, bool inset) const {
   frame.bindTarget();
+  const int side = std::max(16, std::min(frame.width, frame.height) / 4);
+  if (inset) glViewport(frame.width - side - 8, 8, side, side);
   glDisable(GL_DEPTH_TEST);
   program.use();
   glBindVertexArray(gpu_->empty_vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   countDrawCall();
   glEnable(GL_DEPTH_TEST);
+  frame.bindTarget();
 }
 
 void Runner::drawImageInset(const Frame& frame, const Texture& image, bool fullscreen) const {

@@ -74,9 +74,10 @@ struct Frame {
                       bool fullscreen = false) const;
   // A colour texture in a corner (keeping its aspect), or over the whole target.
   void drawImageInset(const Texture& image, bool fullscreen = false) const;
-  // One triangle over the whole target with `program` (common/shaders/fullscreen.vert gives
-  // vUv), no depth test: for debug views computed per pixel.
-  void drawFullscreen(const Program& program) const;
+  // One triangle over the whole target (or, with `inset`, the corner square the depth inset
+  // uses) with `program` (common/shaders/fullscreen.vert gives vUv), no depth test: for
+  // debug views computed per pixel.
+  void drawFullscreen(const Program& program, bool inset = false) const;
 };
 
 class Lesson {
@@ -180,7 +181,7 @@ class Runner {
   void drawInset(const Frame& frame, const Texture& depth, float near, float far, bool perspective,
                  bool fullscreen) const;
   void drawImageInset(const Frame& frame, const Texture& image, bool fullscreen) const;
-  void drawFullscreen(const Frame& frame, const Program& program) const;
+  void drawFullscreen(const Frame& frame, const Program& program, bool inset) const;
 
  private:
   struct Gpu;

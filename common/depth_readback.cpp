@@ -20,6 +20,10 @@ void DepthReadback::declare(Params& p, int digits, bool linearChoice) {
               "how the depth reaches a texture: glReadPixels + glTexSubImage2D, "
               "glCopyTexSubImage2D, or none (the light pass's own texture)",
               kDirtyShadowMap | kDirtyResources);
+  p.addChoice("map.depth_bits", {"24", "16"}, "24",
+              "the light pass's depth buffer (000: copies are fastest when it matches the "
+              "texture's precision)",
+              kDirtyShadowMap | kDirtyResources);
   p.addChoice("bias.mode", {"polygon_offset", "texgen"}, "polygon_offset",
               "polygon_offset: while the map is built (000); texgen: subtracted from the "
               "fragment's r before the divide (000: does not work)",
@@ -36,8 +40,8 @@ void DepthReadback::declare(Params& p, int digits, bool linearChoice) {
 namespace {
 // Whether glReadPixels rounds a depth to the nearest step or down (the GL allows both): clear
 // a 1x1 depth buffer to 100.7 steps and read it back.
-bool driverReadbackRoundsToNearest(int digits) {
-  const Texture depth = Texture::depth(1, 1, 24);
+bool driverReadbackRoundsToNearest(int digits, int depthBits) {
+  const Texture depth = Texture::depth(1, 1, depthBits);
   Framebuffer target;
   target.attachDepth(depth);
   const double top = digits == 1 ? 255.0 : 65535.0;
@@ -54,7 +58,6 @@ bool driverReadbackRoundsToNearest(int digits) {
 }  // namespace
 
 void DepthReadback::init() {
-  nearest_ = driverReadbackRoundsToNearest(digits_);
   const auto dir = commonShaderDir();
   light_program_ = Program(dir / "readback_light.vert", dir / "readback_light.frag");
   if (digits_ == 1) {
@@ -74,6 +77,10 @@ void DepthReadback::init() {
       }
     }
     ramp[ramp.size() - 1] = 254;  // texel (255, 255): see rampDigits
+    // Pass 2 needs only the big digit: "a linear 1D texture" (texel i holding i, all 256).
+    std::vector<std::uint8_t> big(256);
+    for (int i = 0; i < 256; ++i) big[static_cast<size_t>(i)] = static_cast<std::uint8_t>(i);
+    ramp_big_ = Texture::table1D(256, GL_R8, GL_RED, big.data());
     ramp_ = Texture::color(256, 256, GL_RG8);
     ramp_.upload(GL_RG, GL_UNSIGNED_BYTE, ramp.data());
     ramp_.setFilter(GL_NEAREST);
@@ -88,7 +95,9 @@ bool DepthReadback::prepare(Frame& f) {
   linear_ = encoding != nullptr && encoding->is("linear");
   path_ = p.at("map.path").choice();
   inset_ = p.at("inset").b();
-  const std::string key = path_ + (linear_ ? "/linear" : "/projective");
+  depth_bits_ = p.at("map.depth_bits").is("16") ? 16 : 24;
+  const std::string key =
+      path_ + (linear_ ? "/linear/" : "/projective/") + std::to_string(depth_bits_);
   bool recreated = false;
   if (p.consume(kDirtyResources) || size != size_ || key != storage_key_) {
     storage_key_ = key;
@@ -100,8 +109,9 @@ bool DepthReadback::prepare(Frame& f) {
 
 void DepthReadback::recreate(glm::ivec2 size) {
   size_ = size;
+  nearest_ = driverReadbackRoundsToNearest(digits_, depth_bits_);
   const glm::vec4 nothing_in_front(1.0f);  // outside the map: the cleared value, lit
-  light_depth_ = Texture::depth(size.x, size.y, 24);
+  light_depth_ = Texture::depth(size.x, size.y, depth_bits_);
   light_target_ = std::make_unique<Framebuffer>();
   if (linear_) {
     light_color_ = Texture::color(size.x, size.y, GL_R8);
@@ -136,7 +146,7 @@ void DepthReadback::recreate(glm::ivec2 size) {
       copied_ = Texture::color(size.x, size.y, GL_R8);
       copied_.setSwizzle(GL_RED, GL_RED, GL_RED, GL_ONE);
     } else {
-      copied_ = Texture::depth(size.x, size.y, 24);
+      copied_ = Texture::depth(size.x, size.y, depth_bits_);
     }
     copied_.setFilter(GL_NEAREST);
     copied_.setWrap(GL_CLAMP_TO_BORDER, GL_CLAMP_TO_BORDER);
@@ -154,10 +164,11 @@ void DepthReadback::render(Frame& f) {
     glViewport(0, 0, size_.x, size_.y);
     PassState state;
     // 000: "perform bias during depth map construct ... so bias will be in depth buffer
-    // space". One map step is 2^(24 - 8 digits) steps of the 24-bit depth buffer.
+    // space". One map step is about 2^(bits - 8 digits) steps of the depth buffer.
     state.polygon_offset = offset && !linear_;
     state.offset_factor = factor;
-    state.offset_units = steps * 16777215.0f / (digits_ == 1 ? 255.0f : 65535.0f);
+    const float buffer_steps = depth_bits_ == 16 ? 65535.0f : 16777215.0f;
+    state.offset_units = steps * buffer_steps / (digits_ == 1 ? 255.0f : 65535.0f);
     state.apply();
     glClearColor(1.0f, 1.0f, 1.0f, 1.0f);  // linear: "nothing in front" is the top step
     glClear(GL_DEPTH_BUFFER_BIT | (linear_ ? GL_COLOR_BUFFER_BIT : 0u));
@@ -236,6 +247,10 @@ void DepthReadback::bindForLookup(const Frame& f, const Program& program) const 
   ramp_.bind(1);
   program.set("uMap", 0);
   program.set("uRamp", 1);
+  if (digits_ == 2) {
+    ramp_big_.bind(2);
+    program.set("uRampBig", 2);
+  }
   // Depth textures hold depth, not steps: the shader quantizes as glReadPixels would.
   program.set("uMapIsDepth", !linear_ && path_ != "read_pixels" ? 1 : 0);
   program.set("uReadbackNearest", nearest_ ? 1 : 0);

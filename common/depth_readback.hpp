@@ -19,8 +19,9 @@ namespace shadows {
 
 class DepthReadback {
  public:
-  // The light view's shadow.* parameters plus map.path, bias.mode, bias.factor, bias.steps,
-  // inset; with `linearChoice`, map.encoding (Heidrich's linear depth in colour).
+  // The light view's shadow.* parameters plus map.path, map.depth_bits, bias.mode,
+  // bias.factor, bias.steps, inset; with `linearChoice`, map.encoding (Heidrich's linear
+  // depth in colour).
   static void declare(Params& params, int digits, bool linearChoice);
 
   explicit DepthReadback(int digits) : digits_(digits) {}
@@ -33,9 +34,9 @@ class DepthReadback {
   // then the move into the lookup texture (pass "readback", counting readback_bytes).
   void render(Frame& frame);
 
-  // Binds Tex0 (the map) to unit 0 and Tex1 (the ramp) to unit 1 and sets what the eye
-  // shaders of 06/07 read: uMap, uRamp, uMapIsDepth, uLinear, uShadowMatrix, uLinearPlane,
-  // uTexgenBias.
+  // Binds Tex0 (the map) to unit 0, Tex1 (the ramp) to unit 1 (two digits: pass 2's 1D ramp
+  // to unit 2), and sets what the eye shaders of 06/07 read: uMap, uRamp(Big), uMapIsDepth,
+  // uReadbackNearest, uLinear, uShadowMatrix, uLinearPlane, uTexgenBias.
   void bindForLookup(const Frame& frame, const Program& program) const;
   // The map over the whole target (view "map") or in a corner, when `inset` is on.
   void drawInset(const Frame& frame, bool fullscreen = false) const;
@@ -63,6 +64,7 @@ class DepthReadback {
   LightView light_;
   Program light_program_;
   Texture ramp_;                       // Tex1: 1D (one digit) or 2D (two digits) ramp
+  Texture ramp_big_;                   // two digits: the 1D ramp of pass 2 (big digit only)
   Texture light_depth_, light_color_;  // what the light pass renders into
   std::unique_ptr<Framebuffer> light_target_;
   Texture digits_texture_;  // read_pixels: R8 or RG8 (big digit in r)
@@ -70,6 +72,7 @@ class DepthReadback {
   std::vector<std::uint8_t> bytes_;
   std::vector<std::uint16_t> shorts_;
   glm::ivec2 size_{0};
+  int depth_bits_ = 24;
   std::string path_, storage_key_;
   bool linear_ = false, inset_ = true;
   bool nearest_ = true;  // whether glReadPixels rounds to nearest on this driver (depthToSteps)

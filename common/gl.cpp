@@ -321,8 +321,16 @@ void appendWithIncludes(const std::filesystem::path& file, ShaderSource& out, in
   }
 }
 
-GLuint compile(GLenum stage, const std::filesystem::path& file) {
-  const ShaderSource src = preprocessShader(file);
+GLuint compile(GLenum stage, const std::filesystem::path& file,
+               const std::vector<std::string>& defines) {
+  ShaderSource src = preprocessShader(file);
+  // The variant's defines go right after #version (whose #line directive follows them, so
+  // error lines still name the file's own lines).
+  std::string define_lines;
+  for (const std::string& d : defines) define_lines += "#define " + d + "\n";
+  const size_t version = src.text.find("#version");
+  const size_t after = version == std::string::npos ? 0 : src.text.find('\n', version) + 1;
+  src.text.insert(after, define_lines);
   const GLuint shader = glCreateShader(stage);
   const char* text = src.text.c_str();
   glShaderSource(shader, 1, &text, nullptr);
@@ -369,12 +377,12 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::string>&
   return out;
 }
 
-Program::Program(const std::filesystem::path& vertexFile,
-                 const std::filesystem::path& fragmentFile) {
-  const GLuint vs = compile(GL_VERTEX_SHADER, vertexFile);
+Program::Program(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile,
+                 const std::vector<std::string>& defines) {
+  const GLuint vs = compile(GL_VERTEX_SHADER, vertexFile, defines);
   GLuint fs = 0;
   try {
-    fs = compile(GL_FRAGMENT_SHADER, fragmentFile);
+    fs = compile(GL_FRAGMENT_SHADER, fragmentFile, defines);
   } catch (...) {
     glDeleteShader(vs);
     throw;

@@ -184,11 +184,13 @@ class Mesh {
 
 // A vertex + fragment program read from files. `#include "x.glsl"` is resolved against the
 // including file's directory, then the shared common/shaders directory. Compile errors
-// name the original file and line.
+// name the original file and line. `defines` ("PASS 2", ...) select a variant of a shader
+// written with #if blocks: each is compiled with only the code its settings need.
 class Program {
  public:
   Program() = default;
-  Program(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile);
+  Program(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile,
+          const std::vector<std::string>& defines = {});
   void use() const;
   GLint location(const std::string& name) const;
   void set(const std::string& name, int v) const;

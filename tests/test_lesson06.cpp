@@ -68,12 +68,14 @@ TEST(Lesson06, EveryCopyPathSeesTheSameEightBits) {
   // read_pixels quantizes in the driver, the two depth-texture paths in the shader
   // (depthToSteps): the visibility must be identical, bit for bit. Without bias every lit
   // surface is a near-tie with its own texel, so one step off anywhere would show.
-  for (const char* encoding : {"projective", "linear"}) {
+  const std::pair<const char*, const char*> maps[] = {
+      {"projective", "24"}, {"linear", "24"}, {"projective", "16"}};
+  for (const auto& [encoding, bits] : maps) {
     std::vector<float> reference;
     for (const char* path : {"read_pixels", "copy_texture", "render_to_texture"}) {
-      const auto sets = std::vector<std::string>{std::string("map.encoding=") + encoding,
-                                                 std::string("map.path=") + path, "bias.steps=0",
-                                                 "bias.factor=0"};
+      const std::vector<std::string> sets = {
+          std::string("map.encoding=") + encoding, std::string("map.path=") + path,
+          std::string("map.depth_bits=") + bits, "bias.steps=0", "bias.factor=0"};
       auto runner = startLesson(kLesson, sets);
       runner->renderFrame();
       const std::vector<float> visibility = runner->renderVisibility();
@@ -125,6 +127,16 @@ TEST(Lesson06, WithoutBiasNearEqualityShadowsTheLitSurfaces) {
   // into shadow.
   const ErrorMetrics none = measure({"bias.steps=0", "bias.factor=0"});
   EXPECT_GT(none.false_shadow_pct, 5.0);
+}
+
+TEST(Lesson06, TheRampsQuantizationCostsAboutAStepOfBias) {
+  // Tex1 rounds the fragment's depth to the ramp's 256 texels, the map rounds to 255 steps:
+  // the two grids disagree by up to a step, so half a step of bias leaves acne with the ramp
+  // and none with the exact fragment depth.
+  const ErrorMetrics ramp = measure({"bias.steps=0.5"});
+  const ErrorMetrics exact = measure({"bias.steps=0.5", "ramp.lookup=false"});
+  EXPECT_GT(ramp.false_shadow_pct, 3.0);
+  EXPECT_LT(exact.false_shadow_pct, 0.2);
 }
 
 TEST(Lesson06, PassTwoLightsOnlyWhatTheAlphaTestPasses) {

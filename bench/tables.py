@@ -1,0 +1,97 @@
+#!/usr/bin/env python3
+"""Markdown tables for the lesson READMEs from bench_sweep's CSV files, so every number the
+READMEs quote comes from a command anyone can re-run:
+
+  build/bench/bench_sweep --lesson precision_study   # and 06_dual_texture_8bit, 07_multidigit_16bit
+  bench/tables.py precision bench/results/precision_study.csv
+  bench/tables.py copy bench/results/06_dual_texture_8bit.csv bench/results/07_multidigit_16bit.csv
+"""
+import csv
+import statistics
+import sys
+
+
+def rows(path):
+    with open(path, newline="") as f:
+        return [r for r in csv.DictReader(f) if r.get("status") == "ok"]
+
+
+def num(r, key):
+    v = r.get(key, "")
+    return float(v) if v not in ("", "nan") else None
+
+
+def ordered(values):
+    seen = []
+    for v in values:
+        if v not in seen:
+            seen.append(v)
+    return seen
+
+
+def precision(path):
+    data = rows(path)
+    ratios = ordered(r["far_over_near"] for r in data)
+    maps = ordered(r["map"] for r in data)
+    for scene in ordered(r["scene"] for r in data):
+        print(f"\n{scene}: false shadow % / false lit % (1024² map; far/near across)\n")
+        print("| map | " + " | ".join(ratios) + " |")
+        print("|---|" + "---|" * len(ratios))
+        for m in maps:
+            cells = []
+            for ratio in ratios:
+                hit = [r for r in data if r["scene"] == scene and r["map"] == m
+                       and r["far_over_near"] == ratio]
+                cells.append("—" if not hit else
+                             f"{num(hit[0], 'false_shadow_pct'):.2f} / {num(hit[0], 'false_lit_pct'):.2f}")
+            print(f"| {m} | " + " | ".join(cells) + " |")
+    # What a frame costs, per map, over every point (the map is re-rendered each frame).
+    print("\nframe cost in ms, medians over both scenes and every far/near (map re-rendered "
+          "each frame)\n")
+    print("| map | frame | cpu | shadow pass | readback | eye (03-05) | pass 1 | pass 2 | pass 3 "
+          "| frame / 8bit_projective |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    base = None
+    for m in maps:
+        hit = [r for r in data if r["map"] == m]
+
+        def med(key):
+            vals = [num(r, key) for r in hit if num(r, key) is not None]
+            return f"{statistics.median(vals):.2f}" if vals else "—"
+        frame = statistics.median(num(r, "frame_ms") for r in hit)
+        base = base or frame
+        print(f"| {m} | {frame:.1f} | {med('cpu_ms')} | {med('pass_ms.shadow')} | "
+              f"{med('pass_ms.readback')} | {med('pass_ms.eye')} | {med('pass_ms.pass1')} | "
+              f"{med('pass_ms.pass2')} | {med('pass_ms.pass3')} | {frame / base:.2f}× |")
+
+
+def copy(paths):
+    print("\nthe readback pass (ms, median), by map size, path and the light pass's depth bits\n")
+    print("| lesson | path | depth bits | 256² | 512² | 1024² | 2048² | 512²/256² | 2048²/1024² "
+          "| 24/16 bits at 1024² |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for path in paths:
+        data = rows(path)
+        for p in ordered(r["map.path"] for r in data):
+            if p == "render_to_texture":
+                continue  # no copy at all
+            for bits in ("24", "16"):
+                def ms(size, b=bits):
+                    vals = [num(r, "pass_ms.readback") for r in data if r["map.path"] == p
+                            and r["map.depth_bits"] == b and r["shadow.size"] == size]
+                    vals = [v for v in vals if v is not None]
+                    return statistics.median(vals) if vals else float("nan")
+                sizes = [ms(s) for s in ("256", "512", "1024", "2048")]
+                bits_ratio = ms("1024", "24") / ms("1024", "16")
+                print(f"| {data[0]['lesson'][:2]} | {p} | {bits} | " +
+                      " | ".join(f"{v:.2f}" for v in sizes) +
+                      f" | {sizes[1] / sizes[0]:.1f}× | {sizes[3] / sizes[2]:.1f}× | {bits_ratio:.2f}× |")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) >= 3 and sys.argv[1] == "precision":
+        precision(sys.argv[2])
+    elif len(sys.argv) >= 3 and sys.argv[1] == "copy":
+        copy(sys.argv[2:])
+    else:
+        sys.exit(__doc__)
