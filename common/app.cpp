@@ -777,7 +777,7 @@ void Runner::writeReport(JsonWriter& json) {
   json.beginObject();
   json.value("lesson", name_);
   json.value("renderer", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
-  json.value("backend", window_ ? std::string("window") : options_.backend);
+  json.value("backend", window_ ? std::string("window") : HeadlessContext::current());
   json.beginArray("size");
   json.value("", options_.width);
   json.value("", options_.height);

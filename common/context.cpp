@@ -41,7 +41,6 @@ class OsMesaContext final : public HeadlessContext {
     }
   }
   ~OsMesaContext() override { OSMesaDestroyContext(context_); }
-  std::string name() const override { return "osmesa"; }
 
  private:
   OSMesaContext context_ = nullptr;
@@ -87,7 +86,6 @@ class EglSurfacelessContext final : public HeadlessContext {
     eglDestroyContext(display_, context_);
     eglTerminate(display_);
   }
-  std::string name() const override { return "egl"; }
 
  private:
   EGLDisplay display_ = EGL_NO_DISPLAY;
@@ -95,6 +93,12 @@ class EglSurfacelessContext final : public HeadlessContext {
 };
 
 }  // namespace
+
+std::string HeadlessContext::current() {
+  if (eglGetCurrentContext() != EGL_NO_CONTEXT) return "egl";
+  if (OSMesaGetCurrentContext() != nullptr) return "osmesa";
+  return "none";
+}
 
 std::unique_ptr<HeadlessContext> createHeadlessContext(const std::string& backend) {
   if (backend == "egl") return std::make_unique<EglSurfacelessContext>();

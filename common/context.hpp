@@ -11,7 +11,9 @@ namespace shadows {
 class HeadlessContext {
  public:
   virtual ~HeadlessContext() = default;
-  virtual std::string name() const = 0;
+  // Which API's context is current, asked of EGL and OSMesa themselves (not the option that
+  // requested one, so a silent fallback shows): "egl", "osmesa", or "none".
+  static std::string current();
 };
 
 // Creates a 4.5 core context, makes it current and loads GL through glad.

@@ -283,6 +283,18 @@ TEST(Lesson05, DimmingLeavesDiffuseLightInShadow) {
   EXPECT_LT(slide, full);
 }
 
+TEST(Lesson05, EveryInputOfTheMapRendersItAgainAndTheCachedFrameMatchesAnUncachedOne) {
+  std::vector<std::string> inputs = testing::shadowMapInputs();
+  inputs.insert(inputs.end(), {"bias.factor=2", "bias.units=40"});
+  testing::expectEveryMapInputRendersTheMapAgain(kLesson, inputs);
+}
+
+TEST(Lesson05, MovingACasterRendersTheMapAgain) {
+  GTEST_SKIP() << "known bug: Runner::setObjectModel does not mark the shadow map dirty, so "
+                  "a moved caster leaves a stale map on screen with shadow.cache on";
+  testing::expectACasterMoveRendersTheMapAgain(kLesson);
+}
+
 TEST(Lesson05, SliderExtremesStayFiniteAndErrorFree) {
   std::vector<std::vector<std::string>> extremes = testing::shadowMapSliderExtremes();
   extremes.push_back({"bias.factor=0", "bias.units=0"});
