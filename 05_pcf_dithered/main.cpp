@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/gtc/type_ptr.hpp>
 
 #include "app.hpp"
 #include "json.hpp"
@@ -106,15 +107,18 @@ class PcfDithered final : public Lesson {
       e.set("uShadowMatrix", map_.textureMatrix());  // B * P_light * V_light
       e.set("uShadowMap", 0);
       e.set("uView", f.mode == "visibility" ? 1 : f.mode == "taps" ? 2 : 0);
-      e.set("uPcfMode", mode == "none"       ? 0
-                        : mode == "hw2x2"    ? 1
-                        : mode == "grid"     ? 2
-                        : mode == "dithered" ? 3
-                                             : 4);
-      e.set("uRadius", radius);
+      const pcf::Mode kernel = mode == "none"       ? pcf::Mode::None
+                               : mode == "hw2x2"    ? pcf::Mode::Hw2x2
+                               : mode == "grid"     ? pcf::Mode::Grid
+                               : mode == "dithered" ? pcf::Mode::Dithered
+                                                    : pcf::Mode::Poisson;
+      e.set("uPcfMode", static_cast<int>(kernel));
       e.set("uGridSide", grid);
-      // Fewer than 4 Poisson points all sit off centre and shift the shadow sideways.
-      e.set("uPoissonTaps", std::max(4, p.at("pcf.taps").i()));
+      // The offsets the unit tests check are the ones the shader takes (pcf_math.hpp).
+      const std::vector<glm::vec2> taps = pcf::tapOffsets(kernel, p.at("pcf.taps").i(), radius);
+      glProgramUniform2fv(e.id(), e.location("uTaps"), static_cast<GLsizei>(taps.size()),
+                          glm::value_ptr(taps[0]));
+      e.set("uPoissonTaps", static_cast<int>(taps.size()));
       e.set("uEarlyOut", p.at("pcf.early_out").b() ? 1 : 0);
       e.set("uCount", counting ? 1 : 0);
       e.set("uTexel", glm::vec2(1.0f / static_cast<float>(map_.width()),

@@ -1,6 +1,7 @@
-// The arithmetic of lesson 05 in plain C++ (no GL), mirrored from pcf.glsl so unit tests can
-// check it: why depths are never averaged, the kernels' tap offsets, and the radius of the
-// area light a kernel imitates.
+// The arithmetic of lesson 05 in plain C++ (no GL): why depths are never averaged, the
+// kernels' tap offsets, and the radius of the area light a kernel imitates. The offsets are
+// not a mirror: main.cpp hands tapOffsets() to pcf.glsl as its uTaps array, so what the unit
+// tests check is what the shader uses.
 #pragma once
 
 #include <algorithm>
@@ -38,7 +39,7 @@ inline float bilinearPercentageCloser(const std::array<float, 4>& depths, float 
   return bottom + fy * (top - bottom);
 }
 
-// pcf.glsl gridOffset: N taps per axis at the midpoints of a box of half-width `radius` texels.
+// N taps per axis at the midpoints of a box of half-width `radius` texels.
 inline std::vector<glm::vec2> gridOffsets(int n, float radius) {
   std::vector<glm::vec2> taps;
   auto at = [&](int i) {
@@ -50,7 +51,7 @@ inline std::vector<glm::vec2> gridOffsets(int n, float radius) {
   return taps;
 }
 
-// pcf.glsl pcfDithered: seed 001's four taps for the pixel at (x, y) (gl_FragCoord, floored).
+// Seed 001's four dithered taps for the pixel at (x, y) (gl_FragCoord, floored).
 inline std::array<glm::vec2, 4> ditheredOffsets(int x, int y, float radius) {
   const float swidth = 0.5f * radius;
   const glm::vec2 o = glm::vec2(static_cast<float>(x % 2), static_cast<float>(y % 2)) * swidth;
@@ -60,11 +61,66 @@ inline std::array<glm::vec2, 4> ditheredOffsets(int x, int y, float radius) {
           glm::vec2(0.5f * swidth + o.x, -0.5f * swidth - o.y)};
 }
 
+// Seed 003 slide 71: a progressive Poisson disk in the unit circle (each prefix is spread
+// out), the first four on the rim so they double as the early-out probes.
+inline const std::array<glm::vec2, 64>& poissonDisk() {
+  static const std::array<glm::vec2, 64> points = {{
+      {0.6364f, 0.6364f},   {-0.6364f, 0.6364f},  {-0.6364f, -0.6364f}, {0.6364f, -0.6364f},
+      {-0.0213f, 0.0144f},  {0.9892f, -0.0104f},  {-0.9460f, -0.0379f}, {0.0371f, -0.9720f},
+      {0.0072f, 0.9425f},   {0.4781f, 0.1453f},   {-0.1561f, -0.5123f}, {-0.4557f, 0.1950f},
+      {0.0282f, 0.4832f},   {0.2798f, -0.2901f},  {-0.5320f, -0.1895f}, {0.2223f, -0.6549f},
+      {-0.9015f, 0.3348f},  {-0.3560f, -0.9296f}, {0.6528f, -0.2006f},  {-0.3868f, 0.9175f},
+      {0.8903f, 0.3451f},   {0.3506f, 0.9340f},   {-0.8607f, -0.3669f}, {0.3473f, 0.4409f},
+      {-0.2947f, 0.5928f},  {0.9379f, -0.3368f},  {0.3576f, -0.9327f},  {-0.2312f, -0.1876f},
+      {0.2048f, 0.1853f},   {-0.7193f, 0.1017f},  {-0.1647f, 0.2537f},  {-0.4166f, -0.4569f},
+      {0.7434f, 0.1104f},   {0.1696f, 0.7117f},   {0.0159f, -0.2977f},  {0.6284f, 0.3764f},
+      {-0.6299f, 0.3801f},  {-0.0287f, -0.7276f}, {0.4193f, -0.5094f},  {0.3624f, -0.0640f},
+      {-0.3406f, -0.6830f}, {-0.0786f, 0.7117f},  {0.3967f, 0.6555f},   {0.7440f, -0.4383f},
+      {-0.2929f, 0.0279f},  {-0.7658f, -0.1645f}, {-0.6443f, -0.4155f}, {-0.3949f, 0.4047f},
+      {0.5397f, 0.8280f},   {0.1522f, -0.1113f},  {0.4496f, -0.7390f},  {-0.8304f, 0.5428f},
+      {-0.5391f, -0.8307f}, {0.0667f, -0.5224f},  {0.4880f, -0.3198f},  {0.8279f, 0.5451f},
+      {-0.1904f, 0.9690f},  {-0.1662f, -0.8729f}, {0.8374f, -0.1358f},  {-0.5392f, 0.0182f},
+      {-0.9821f, 0.1516f},  {-0.4525f, 0.7069f},  {-0.2659f, 0.7764f},  {0.0470f, 0.2986f},
+  }};
+  return points;
+}
+
+enum class Mode { None, Hw2x2, Grid, Dithered, Poisson };
+
 // The side N of the grid for a tap budget: the largest N x N that fits, 1 to 8 (64 taps).
 inline int gridSide(int taps) {
   int n = 1;
   while ((n + 1) * (n + 1) <= taps && n < 8) ++n;
   return n;
+}
+
+// What pcf.glsl's uTaps holds, in texels: grid, N x N row by row (N = gridSide(taps));
+// dithered, the four patterns of ditheredOffsets one after another, pattern x + 2y for the
+// pixel parity (x, y); poisson, the first `taps` disk points (at least 4) times the radius;
+// none and hw2x2, the one tap at the centre.
+inline std::vector<glm::vec2> tapOffsets(Mode mode, int taps, float radius) {
+  switch (mode) {
+    case Mode::Grid:
+      return gridOffsets(gridSide(taps), radius);
+    case Mode::Dithered: {
+      std::vector<glm::vec2> offsets;
+      for (int y = 0; y < 2; ++y) {
+        for (int x = 0; x < 2; ++x) {
+          for (const glm::vec2& o : ditheredOffsets(x, y, radius)) offsets.push_back(o);
+        }
+      }
+      return offsets;
+    }
+    case Mode::Poisson: {
+      // Fewer than 4 points all sit off centre and would shift the shadow sideways.
+      const auto n = static_cast<size_t>(std::clamp(taps, 4, 64));
+      std::vector<glm::vec2> offsets;
+      for (size_t k = 0; k < n; ++k) offsets.push_back(poissonDisk()[k] * radius);
+      return offsets;
+    }
+    default:
+      return {glm::vec2(0.0f)};
+  }
 }
 
 // The radius of the disk light whose penumbra a kernel of `kernelTexels` half-width imitates.

@@ -240,6 +240,23 @@ TEST(Lesson01, TheTruthSeesTheTiltedReceiver) {
   EXPECT_EQ(runner->glErrors(), 0);
 }
 
+TEST(Lesson01, ADirectionalLightCastsTheShadowsTheTruthHas) {
+  // L = (-direction, 0): the shadows fall away from the light. With the direction flipped
+  // every shadow vanishes (the light would be "behind the plane") and the floor under each
+  // caster reads false lit (about 2.4% of the counted pixels).
+  for (const char* pos : {"light.pos=3,6,4", "light.pos=1,8,-3"}) {
+    auto runner = startLesson(kLesson, {"light.type=directional", pos});
+    runner->renderFrame();
+    const ErrorMetrics& e = runner->measureError().metrics;
+    EXPECT_EQ(e.truth, "directional") << pos;
+    EXPECT_LT(e.false_lit_pct, 0.5) << pos;
+    EXPECT_LT(e.false_shadow_pct, 0.1) << pos;
+    EXPECT_GT(e.counted_pixels, 20000) << pos;
+    EXPECT_EQ(runner->measure().lastFrameWork().count("shadow"), 1u) << pos << ": shadows drawn";
+    EXPECT_EQ(runner->glErrors(), 0) << pos;
+  }
+}
+
 TEST(Lesson01, WhatPlanarShadowsGetWrongIsTheShadowOnEverythingButThePlane) {
   // Grazing light: the torus shadows itself and the pyramid. A planar shadow falls on
   // the floor only, so those pixels are lit where the truth has shadow.

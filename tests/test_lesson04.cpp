@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include <map>
+#include <optional>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -65,11 +66,12 @@ TEST(Lesson04, DefaultsHoldForLightsUsedNowhereElse) {
   expectGoodDefaults({"scene=grazing", "shadow.size=2048", "light.pos=6.4,2.3,5.5"});
 }
 
-TEST(Lesson04, PolygonOffsetAloneFailsWhereTheLightGrazesAFaceNextToARidge) {
+TEST(Lesson04, TheDefaultBeatsPolygonOffsetAloneWhereTheLightGrazesAFaceNextToARidge) {
   // Why the default is not glPolygonOffset alone: from this light one pyramid face is seen
   // almost edge-on. Its pixels look up texels that hold the neighbouring face across the
   // ridge, whose own slope is small, so no factor covers the gap (even 8). Back faces store
-  // the far side of the pyramid and clear it.
+  // the far side of the pyramid and clear it. The default is measured as it ships (no
+  // bias.mode set), so a default that slid back to polygon_offset fails here.
   const std::vector<std::string> light = {"scene=torus_pyramid", "shadow.size=2048",
                                           "light.pos=8.31,4.63,-4.42"};
   auto with = [&](std::vector<std::string> extra) {
@@ -78,9 +80,25 @@ TEST(Lesson04, PolygonOffsetAloneFailsWhereTheLightGrazesAFaceNextToARidge) {
   };
   EXPECT_GT(with({"bias.mode=polygon_offset"}).false_shadow_pct, 0.4);
   EXPECT_GT(with({"bias.mode=polygon_offset", "bias.factor=8"}).false_shadow_pct, 0.4);
-  const ErrorMetrics back = with({"bias.mode=back_faces"});
-  EXPECT_LE(back.false_shadow_pct, 0.2);
-  EXPECT_LE(back.false_lit_pct, 1.0);
+  const ErrorMetrics defaults = with({});
+  EXPECT_LE(defaults.false_shadow_pct, 0.1);
+  EXPECT_LE(defaults.false_lit_pct, 1.0);
+}
+
+TEST(Lesson04, TheDefaultsOffsetTakesAcneOffTheBackFacesOfACoarseMap) {
+  // Back faces alone leave acne where a caster is thin against the texel (silhouettes on a
+  // 128² map); the default's glPolygonOffset(1.1, 4.0) on top takes about a third of it
+  // off (measured 0.127% against 0.181% on torus_pyramid, 0.187% against 0.267% on
+  // grazing), at the price of some false lit (0.52% against 0.25%), still within the bar.
+  for (const std::string scene : {"torus_pyramid", "grazing"}) {
+    const std::vector<std::string> coarse = {"scene=" + scene, "shadow.size=128"};
+    const ErrorMetrics defaults = measure(coarse);
+    std::vector<std::string> bare = coarse;
+    bare.insert(bare.end(), {"bias.factor=0", "bias.units=0"});
+    const ErrorMetrics back_faces_only = measure(bare);
+    EXPECT_LT(defaults.false_shadow_pct, 0.8 * back_faces_only.false_shadow_pct) << scene;
+    EXPECT_LE(defaults.false_lit_pct, 1.0) << scene;
+  }
 }
 
 TEST(Lesson04, BothFailuresAreReachable) {
@@ -118,20 +136,50 @@ TEST(Lesson04, EveryBiasModeBehavesAsTheSlidesSay) {
       0.5);
 }
 
+// The value of `uniform float name` in whichever of the context's programs declares it
+// (the lessons keep their programs private; GL names are small integers from 1).
+std::optional<float> uniformInAnyProgram(const char* name) {
+  for (GLuint program = 1; program < 1000; ++program) {
+    if (glIsProgram(program) == GL_FALSE) continue;
+    const GLint location = glGetUniformLocation(program, name);
+    if (location < 0) continue;
+    float value = 0.0f;
+    glGetUniformfv(program, location, &value);
+    return value;
+  }
+  return std::nullopt;
+}
+
 TEST(Lesson04, ClipTranslateBiasShrinksWithDistanceFromTheLight) {
   // 000's mistake: z_clip + t lands in the depth buffer as t / 2w. For a spot light the bias
   // at the near plane is far/near times the bias at the far plane; an orthographic light
-  // (w = 1) keeps it constant.
+  // (w = 1) keeps it constant. Checked on the translate the depth shader really receives:
+  // t / 2w at w = near must be `units` depth steps (24-bit map).
+  const double step = 1.0 / 16777215.0;
   auto spot = startLesson(kLesson, {"bias.mode=clip_translate", "shadow.fit=false"});
   spot->renderFrame();
+  const double near = spot->scene().light.near, far = spot->scene().light.far;
+  const std::optional<float> t = uniformInAnyProgram("uClipOffset");
+  ASSERT_TRUE(t.has_value()) << "the depth shader must use uClipOffset";
+  EXPECT_NEAR(*t / (2.0 * near) / step, 4.0, 1e-3) << "units (4) steps at the near plane";
   const double near_steps = reportNumber(*spot, "clip_translate_steps_at_near");
   const double far_steps = reportNumber(*spot, "clip_translate_steps_at_far");
+  EXPECT_NEAR(near_steps, *t / (2.0 * near) / step, 1e-3);
+  EXPECT_NEAR(far_steps, *t / (2.0 * far) / step, 1e-3);
   EXPECT_NEAR(near_steps / far_steps, 16.0 / 2.0, 1e-3);  // torus_pyramid: near 2, far 16
   spot.reset();
   auto directional = startLesson(kLesson, {"bias.mode=clip_translate", "light.type=directional"});
   directional->renderFrame();
+  const std::optional<float> ortho = uniformInAnyProgram("uClipOffset");
+  ASSERT_TRUE(ortho.has_value());
+  EXPECT_NEAR(*ortho / 2.0 / step, 4.0, 1e-3) << "w = 1 everywhere";
   EXPECT_DOUBLE_EQ(reportNumber(*directional, "clip_translate_steps_at_near"),
                    reportNumber(*directional, "clip_translate_steps_at_far"));
+  directional.reset();
+  // Every other mode translates nothing.
+  auto other = startLesson(kLesson, {"bias.mode=polygon_offset"});
+  other->renderFrame();
+  EXPECT_EQ(uniformInAnyProgram("uClipOffset"), std::optional<float>(0.0f));
 }
 
 TEST(Lesson04, EveryModeAndViewRendersWithoutGlErrorsOrNonFiniteValues) {

@@ -108,6 +108,24 @@ TEST(Lesson05, LinearCompareOfTheSeed2x2MapIsHalfLitWhereTheAveragedDepthShadows
   EXPECT_EQ(runner->glErrors(), 0);
 }
 
+TEST(Lesson05, Hw2x2BlendsFourComparesWhereNoneIsOnlyLitOrShadowed) {
+  // One lookup each; through the GL_LINEAR compare sampler the unit blends the 2x2 block's
+  // results, so hw2x2's edges take values between 0 and 1 and nearest's never do.
+  auto fractional = [](const std::string& mode) {
+    auto runner = startLesson(kLesson, {"pcf.mode=" + mode, "shadow.size=128"}, 320, 240);
+    runner->renderFrame();
+    size_t between = 0;
+    for (float v : runner->renderVisibility()) {
+      // (The sky keeps the clear colour, whose red is not a shadow term.)
+      between += v > 0.05f && v < 0.95f && v != Frame::kSky.r ? 1 : 0;
+    }
+    EXPECT_EQ(runner->glErrors(), 0) << mode;
+    return between;
+  };
+  EXPECT_EQ(fractional("none"), 0u);
+  EXPECT_GT(fractional("hw2x2"), 400u) << "soft 2x2 edges along every shadow";
+}
+
 TEST(Lesson05, EveryModeAndViewRendersWithoutGlErrorsOrNonFiniteValues) {
   auto runner = startLesson(kLesson, {"pcf.taps=64"}, 160, 120);
   for (const std::string& mode : runner->params().at("pcf.mode").choices) {

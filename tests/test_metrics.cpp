@@ -76,17 +76,42 @@ TEST(Metrics, ThresholdIsOneHalfInclusiveForLit) {
   EXPECT_DOUBLE_EQ(m.false_shadow_pct, 100.0 / 3.0);  // 0.49 under a lit 0.5
 }
 
+TEST(Metrics, TruthBetweenPointFourAndOneHalfIsShadowed) {
+  // Area-light truths take every value in between: the lit threshold must be 0.5 for the
+  // truth as for the picture, or penumbra pixels drift from one class to the other.
+  // Counted pixels: truth 0.45 rendered 0.5 (false lit), truth 0.41 rendered 0.55 (false
+  // lit), truth 0.49 rendered 0.3 (right), truth 0.5 rendered 0.45 (false shadow), and four
+  // right ones. Two false lit against one false shadow, so swapped classes show.
+  const std::vector<float> rendered = {0.5f, 0.55f, 0.3f, 0.45f, 1.0f, 0.0f, 0.6f, 0.4f};
+  const std::vector<float> truth = {0.45f, 0.41f, 0.49f, 0.5f, 1.0f, 0.0f, 0.5f, 0.4999f};
+  const ErrorMetrics m = compareVisibility(rendered, truth, std::vector<float>(8, 1.0f));
+  EXPECT_EQ(m.counted_pixels, 8);
+  EXPECT_DOUBLE_EQ(m.false_lit_pct, 25.0);
+  EXPECT_DOUBLE_EQ(m.false_shadow_pct, 12.5);
+  // The error picture classifies the same way: cyan, cyan, dim, magenta, then dim.
+  const std::vector<std::uint8_t> shaded(4 * truth.size(), 100);
+  const std::vector<std::uint8_t> img = errorImage(shaded, rendered, truth);
+  const std::vector<int> red = {0, 0, 35, 255, 35, 35, 35, 35};  // cyan 0, magenta 255
+  const std::vector<int> green = {255, 255, 35, 0, 35, 35, 35, 35};
+  for (size_t i = 0; i < truth.size(); ++i) {
+    EXPECT_EQ(img[4 * i], red[i]) << "pixel " << i;
+    EXPECT_EQ(img[4 * i + 1], green[i]) << "pixel " << i;
+  }
+}
+
 TEST(Metrics, NonFinitePixelsAreCountedEverywhereAndAreWrong) {
-  const std::vector<float> rendered = {kNaN, kInf, -kInf, kNaN, kInf, 1.0f, 0.0f};
-  const std::vector<float> truth = {1.0f, 0.0f, kNotCounted, kNotCounted, 1.0f, 1.0f, 0.0f};
-  const std::vector<float> weight = {1.0f, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 1.0f};
+  // Asymmetric on purpose: two non-finite pixels on lit truth (false shadow), one on shadowed
+  // truth (false lit), so a swap of the two classes changes the numbers.
+  const std::vector<float> rendered = {kNaN, kInf, -kInf, kNaN, kInf, 1.0f, 0.0f, -kInf};
+  const std::vector<float> truth = {1.0f, 0.0f, kNotCounted, kNotCounted, 1.0f, 1.0f, 0.0f, 0.75f};
+  const std::vector<float> weight = {1.0f, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 1.0f, 1.0f};
   const ErrorMetrics m = compareVisibility(rendered, truth, weight);
-  EXPECT_EQ(m.nonfinite_pixels, 5);  // index 4 has weight 0: uncounted, still non-finite
-  EXPECT_EQ(m.counted_pixels, 4);
-  EXPECT_EQ(m.false_shadow_pct, 25.0);  // NaN where the truth is lit
-  EXPECT_EQ(m.false_lit_pct, 25.0);     // Inf where the truth is shadowed
-  EXPECT_EQ(m.vis_mae, 0.5);            // each non-finite pixel is an error of 1
-  EXPECT_EQ(m.shade_mae, 0.5);
+  EXPECT_EQ(m.nonfinite_pixels, 6);  // index 4 has weight 0: uncounted, still non-finite
+  EXPECT_EQ(m.counted_pixels, 5);
+  EXPECT_EQ(m.false_shadow_pct, 40.0);  // NaN and -Inf where the truth is lit
+  EXPECT_EQ(m.false_lit_pct, 20.0);     // Inf where the truth is shadowed
+  EXPECT_DOUBLE_EQ(m.vis_mae, 0.6);     // each non-finite pixel is an error of 1
+  EXPECT_DOUBLE_EQ(m.shade_mae, 0.6);
   EXPECT_TRUE(std::isfinite(m.vis_mae) && std::isfinite(m.shade_mae));
 }
 

@@ -1,6 +1,6 @@
-// Lesson 05's arithmetic without GL (05_pcf_dithered/pcf_math.hpp mirrors pcf.glsl): seed
-// 000's "Depth Values are not Blend-able" example, the kernels, and the area light a kernel
-// imitates.
+// Lesson 05's arithmetic without GL (05_pcf_dithered/pcf_math.hpp): seed 000's "Depth
+// Values are not Blend-able" example, the kernels' tap offsets (the very ones pcf.glsl takes
+// as uTaps), and the area light a kernel imitates.
 #include "../05_pcf_dithered/pcf_math.hpp"
 
 #include <gtest/gtest.h>
@@ -72,6 +72,54 @@ TEST(PcfMath, TheFourDitheredPatternsOfA2x2BlockAreThe16TapGrid) {
   }
   // The pattern depends on the pixel only through its parity.
   EXPECT_EQ(ditheredOffsets(3, 5, 3.0f), ditheredOffsets(1, 1, 3.0f));
+}
+
+TEST(PcfMath, TheShadersTapArrayHoldsEachKernelCentredInItsLayout) {
+  // pcf.glsl indexes uTaps: grid row by row, dithered pattern x + 2y, poisson in disk order.
+  auto centre = [](const std::vector<glm::vec2>& taps) {
+    glm::vec2 sum(0.0f);
+    for (const auto& t : taps) sum += t;
+    return sum / static_cast<float>(taps.size());
+  };
+  const auto grid = tapOffsets(Mode::Grid, 20, 3.0f);  // 4 x 4
+  ASSERT_EQ(grid.size(), 16u);
+  EXPECT_EQ(grid, gridOffsets(4, 3.0f));
+  EXPECT_LT(grid[1].x - grid[0].x, 2.0f) << "row by row: x runs first";
+  EXPECT_EQ(grid[1].y, grid[0].y);
+  EXPECT_NEAR(glm::length(centre(grid)), 0.0f, 1e-5f);
+  const auto dithered = tapOffsets(Mode::Dithered, 16, 3.0f);
+  ASSERT_EQ(dithered.size(), 16u);
+  for (int y = 0; y < 2; ++y) {
+    for (int x = 0; x < 2; ++x) {
+      const auto pattern = ditheredOffsets(x, y, 3.0f);
+      for (size_t k = 0; k < 4; ++k) {
+        EXPECT_EQ(dithered[static_cast<size_t>(4 * (x + 2 * y)) + k], pattern[k]) << x << y;
+      }
+    }
+  }
+  EXPECT_NEAR(glm::length(centre(dithered)), 0.0f, 1e-5f);
+  const auto poisson = tapOffsets(Mode::Poisson, 10, 2.0f);
+  ASSERT_EQ(poisson.size(), 10u);
+  EXPECT_EQ(poisson[3], 2.0f * poissonDisk()[3]);
+  EXPECT_EQ(tapOffsets(Mode::Poisson, 1, 2.0f).size(), 4u) << "never fewer than the 4 probes";
+  EXPECT_EQ(tapOffsets(Mode::None, 64, 5.0f), std::vector<glm::vec2>{glm::vec2(0.0f)});
+  EXPECT_EQ(tapOffsets(Mode::Hw2x2, 64, 5.0f), std::vector<glm::vec2>{glm::vec2(0.0f)});
+}
+
+TEST(PcfMath, ThePoissonDiskFillsTheUnitDiskAndProbesOnItsRim) {
+  // The first four double as early-out probes: on the rim, one per quadrant, centred.
+  glm::vec2 probes(0.0f);
+  for (size_t k = 0; k < 4; ++k) {
+    EXPECT_GT(glm::length(poissonDisk()[k]), 0.85f) << k;
+    probes += poissonDisk()[k];
+  }
+  EXPECT_NEAR(glm::length(probes), 0.0f, 1e-4f);
+  glm::vec2 all(0.0f);
+  for (const auto& p : poissonDisk()) {
+    EXPECT_LE(glm::length(p), 1.0f);
+    all += p;
+  }
+  EXPECT_LT(glm::length(all / 64.0f), 0.05f) << "no sideways shift of the shadow";
 }
 
 TEST(PcfMath, GridSideIsTheLargestSquareInTheTapBudget) {
