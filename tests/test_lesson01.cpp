@@ -5,6 +5,10 @@
 
 #include "json.hpp"
 
+#include <imgui_internal.h>
+
+#include <algorithm>
+
 namespace shadows {
 namespace {
 
@@ -290,12 +294,44 @@ TEST(Lesson01, SliderExtremesStayFiniteAndErrorFree) {
 }
 
 TEST(Lesson01, PanelDrawsTheNotesWithoutGlErrors) {
+  // The notes window ("what cannot cast") in the top-right corner, tall enough for every
+  // note the report lists, and really on the picture (it differs from the frame without it).
   auto runner = startLesson(kLesson, kLowLight, 800, 600, /*panel=*/true);
-  runner->renderFrame();
-  runner->renderFrame();
+  runner->setMouse({-1, -1}, false);
+  // The notes come from the frame before (render runs after the panel), and an auto-sized
+  // window is measured on its first frame and placed on the next.
+  for (int frame = 0; frame < 4; ++frame) runner->renderFrame();
   EXPECT_GT(runner->params().at("fix.receiver").widget_max.x,
             runner->params().at("fix.receiver").widget_min.x);
+  const std::string report = reportText(*runner);
+  const size_t notes = static_cast<size_t>(
+      std::count(report.begin() + static_cast<long>(report.find("\"notes\"")), report.end(), '"') /
+      2);
+  ASSERT_GE(notes, 1u) << report;
+  const ImGuiWindow* window = ImGui::FindWindowByName("what cannot cast");
+  ASSERT_NE(window, nullptr) << "no notes window";
+  EXPECT_TRUE(window->Active) << "drawn this frame";
+  EXPECT_GT(window->Pos.x, 400.0f) << "right half";
+  EXPECT_LT(window->Pos.y, 50.0f) << "at the top";
+  EXPECT_GE(window->ContentSize.y, static_cast<float>(notes) * ImGui::GetTextLineHeight());
+  const int x0 = static_cast<int>(window->Pos.x) + 4, y0 = static_cast<int>(window->Pos.y) + 4;
+  const int x1 = x0 + static_cast<int>(window->Size.x) - 8;
+  const int y1 = y0 + static_cast<int>(window->Size.y) - 8;
+  const Image with_notes = runner->readImage();
   EXPECT_EQ(runner->glErrors(), 0);
+  runner.reset();
+  const Image without = render(kLowLight, 800, 600);
+  size_t differing = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      // Images are bottom-up; ImGui's y runs down.
+      const size_t i = (static_cast<size_t>(599 - y) * 800 + static_cast<size_t>(x)) * 4;
+      if (!std::equal(&with_notes.rgba[i], &with_notes.rgba[i] + 3, &without.rgba[i])) {
+        ++differing;
+      }
+    }
+  }
+  EXPECT_GT(differing, static_cast<size_t>((x1 - x0) * (y1 - y0)) / 2) << "the window is shown";
 }
 
 }  // namespace

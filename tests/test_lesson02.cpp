@@ -5,6 +5,8 @@
 
 #include "json.hpp"
 
+#include <imgui.h>
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -263,12 +265,43 @@ TEST(Lesson02, SliderExtremesStayFiniteAndErrorFree) {
   testing::expectFiniteAndErrorFree(kLesson, extremes);
 }
 
-TEST(Lesson02, PanelShowsTheImagePathFieldWithoutGlErrors) {
-  auto runner = startLesson(kLesson, {}, 800, 600, /*panel=*/true);
+TEST(Lesson02, PanelShowsTheImagePathFieldWhichLoadsATypedPng) {
+  // The field is there to be used: click it, select all, type a PNG's path, press Enter.
+  TempDir dir;
+  const std::string path = (dir.path / "typed.png").string();
+  ASSERT_TRUE(writePng(path, twoColourSlide(64, 32)));
+  auto runner = startLesson(kLesson, {"inset=false"}, 800, 600, /*panel=*/true);
+  runner->setMouse({-1, -1}, false);
   runner->renderFrame();
   runner->renderFrame();
   const Param& image = runner->params().at("projector.image");
-  EXPECT_GT(image.widget_max.x, image.widget_min.x) << "an input field was drawn";
+  ASSERT_GT(image.widget_max.x, image.widget_min.x) << "an input field was drawn";
+  const Image before = runner->readImage();
+  ImGuiIO& io = ImGui::GetIO();
+  constexpr int kKeyA = 65, kKeyEnter = 13;  // any indices: the test's own key map
+  io.KeyMap[ImGuiKey_A] = kKeyA;
+  io.KeyMap[ImGuiKey_Enter] = kKeyEnter;
+  const glm::vec2 field = {image.widget_min.x + 20.0f,
+                           0.5f * (image.widget_min.y + image.widget_max.y)};
+  for (const bool down : {false, true, false}) {
+    runner->setMouse(field, down);
+    runner->renderFrame();
+  }
+  auto press = [&](int key, bool ctrl) {
+    io.KeyCtrl = ctrl;
+    io.KeysDown[key] = true;
+    runner->renderFrame();
+    io.KeysDown[key] = false;
+    io.KeyCtrl = false;
+    runner->renderFrame();
+  };
+  press(kKeyA, true);  // select "builtin"
+  io.AddInputCharactersUTF8(path.c_str());
+  runner->renderFrame();
+  press(kKeyEnter, false);
+  EXPECT_EQ(runner->params().at("projector.image").s(), path);
+  runner->renderFrame();
+  EXPECT_GT(fractionDiffering(before, runner->readImage(), 24), 0.02) << "the new slide shows";
   EXPECT_EQ(runner->glErrors(), 0);
 }
 
