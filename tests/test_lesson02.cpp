@@ -76,8 +76,7 @@ Image twoColourSlide(int width, int height) {
 }
 
 TEST(Lesson02, SnapshotMatchesTheGolden) {
-  // Rendered on Mesa llvmpipe and looked at (tests/golden/README.md); same Mesa, same bytes.
-  // A missing slide, a mirrored one or a black frame changes far more than the tolerance.
+  // Rendered on Mesa llvmpipe and looked at; tolerance and why in tests/golden/README.md.
   const Image image = render({});
   testing::expectMatchesGolden(image, "02_projective_texture");
 }

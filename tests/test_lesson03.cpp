@@ -16,12 +16,8 @@ using testing::startLesson;
 const std::string kLesson = "03_shadow_map_basic";
 
 TEST(Lesson03, SnapshotMatchesTheGolden) {
-  // The golden was rendered by this lesson on Mesa llvmpipe and looked at (see
-  // tests/golden/README.md). llvmpipe gives identical bytes across runs and thread counts,
-  // so on the same Mesa the difference is 0; the tolerance leaves room for another Mesa's
-  // rasterization rules moving edge pixels and acne moire (at most 2% of pixels, mean
-  // difference under 2 levels), while a missing shadow, a wrong light or a black frame
-  // changes far more (a missing shadow alone is over 5% of this frame).
+  // The golden was rendered by this lesson on Mesa llvmpipe and looked at; the tolerance
+  // (a handful of moved pixels) and why are in tests/golden/README.md.
   auto runner = startLesson(kLesson, {"shadow.size=1024"});
   runner->renderFrame();
   const Image image = runner->readImage();

@@ -30,8 +30,7 @@ ErrorMetrics measure(const std::vector<std::string>& sets, int width = 320, int 
 
 TEST(Lesson04, SnapshotMatchesTheGolden) {
   // Default settings (back faces + glPolygonOffset(1.1, 4.0), 1024² map): torus_pyramid with
-  // clean lit casters. Tolerance as for lesson 03 (tests/test_lesson03.cpp): same Mesa gives
-  // 0 difference; acne coming back covers well over 2% of this frame.
+  // clean lit casters. Tolerance and why in tests/golden/README.md.
   auto runner = startLesson(kLesson, {});
   runner->renderFrame();
   const Image image = runner->readImage();

@@ -26,8 +26,8 @@ long long counter(Runner& runner, const std::string& name) {
 
 TEST(Lesson05, SnapshotMatchesTheGolden) {
   // Defaults (4 dithered taps over +-2 texels, dimming 0.4) on a 256² map, so the penumbrae
-  // and their dither pattern cover enough pixels to matter. Tolerance as for lesson 03
-  // (tests/test_lesson03.cpp); a hard edge or a lost dimming changes more than 2% of pixels.
+  // and their dither pattern cover enough pixels to matter. Tolerance and why in
+  // tests/golden/README.md.
   auto runner = startLesson(kLesson, {"shadow.size=256"});
   runner->renderFrame();
   const Image image = runner->readImage();
