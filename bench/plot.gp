@@ -1,7 +1,8 @@
 # Time against error for one lesson's sweep. bench_sweep calls it with -e setting:
 #   data     the .plot.dat: one block per (scene, series), scene-major, two blank lines apart;
 #            columns 1 frame_ms  2 cpu_ms  3 frame_min_ms  4 vis_mae  5 false_shadow_pct
-#            6 false_lit_pct  7 shade_mae  8 the value of `along` (a point's label)
+#            6 false_lit_pct  7 shade_mae  8 a point's label  9 the value of `along`
+#            10 air_rel_rmse (%)  11 air_mae (lesson 08; nan elsewhere)
 #   out      the PNG to write;  title  the page title
 #   xcol, xlabel  the time column and its axis label
 #   scenes   scene names: one column of panels each

@@ -68,7 +68,7 @@ struct Sweep {
   std::vector<Axis> axes;
   std::vector<std::string> fixed;  // --set values every configuration shares
   // The error metrics plotted against time, one row of panels each: any of vis_mae,
-  // false_shadow_pct, false_lit_pct, shade_mae.
+  // false_shadow_pct, false_lit_pct, shade_mae, air_rel_rmse_pct, air_mae.
   std::vector<std::string> plot_metrics = {"vis_mae"};
   // Plot against axes[0]'s (numeric) value instead of time, for knobs that cost nothing
   // (a bias): there the question is how error moves with the knob.
@@ -159,6 +159,15 @@ const std::map<std::string, Sweep>& sweeps() {
         .plot_metrics = {"false_shadow_pct", "false_lit_pct"},
         .plot_along = true,
         .study = true}},
+      {"08_atmospherics",
+       // Slices against the air's error: where more slices stop paying (the map's resolution
+       // or the truth's own noise), with and without jitter, on two map sizes.
+       {.scenes = {"room"},
+        .axes = {{"air.slices", {"4", "8", "16", "32", "48", "64", "96", "128"}},
+                 {"air.jitter", {"false", "true"}},
+                 {"shadow.size", {"256", "1024"}}},
+        .fixed = {"shadow.cache=false", "inset=false"},
+        .plot_metrics = {"air_rel_rmse_pct", "air_mae"}}},
   };
   return table;
 }
@@ -501,8 +510,9 @@ Table makeTable(const std::vector<const Config*>& configs,
     column("fragment_invocations." + p, true);
   }
   for (const auto& name : counts) column(name, true);
-  for (const char* name : {"false_shadow_pct", "false_lit_pct", "vis_mae", "shade_mae",
-                           "nonfinite_pixels", "counted_pixels"}) {
+  for (const char* name :
+       {"false_shadow_pct", "false_lit_pct", "vis_mae", "shade_mae", "nonfinite_pixels",
+        "counted_pixels", "air_mae", "air_rel_rmse", "air_truth_noise"}) {
     column(name, true);
   }
   column("truth", false);
@@ -542,6 +552,10 @@ Table makeTable(const std::vector<const Config*>& configs,
     row.push_back(e ? number(r.error.shade_mae) : "");
     row.push_back(e ? std::to_string(r.error.nonfinite_pixels) : "");
     row.push_back(e ? std::to_string(r.error.counted_pixels) : "");
+    const bool air = e && r.error.air.valid;  // lesson 08's air light
+    row.push_back(air ? number(r.error.air.mae) : "");
+    row.push_back(air ? number(r.error.air.rel_rmse) : "");
+    row.push_back(air ? number(r.error.air.truth_noise) : "");
     row.push_back(e ? r.error.truth : "");
     row.push_back(std::to_string(r.gl_errors));
     row.push_back(r.renderer);
@@ -678,11 +692,13 @@ std::string writePlotData(const std::filesystem::path& path, const std::string& 
              << floored(e.vis_mae, 0.5 * pixel) << " " << floored(e.false_shadow_pct, 50.0 * pixel)
              << " " << floored(e.false_lit_pct, 50.0 * pixel) << " "
              << floored(e.shade_mae, 0.5 * pixel) << " \"" << c.values[0] << "\" "
-             << alongValue(c.values[0]) << "\n";
+             << alongValue(c.values[0]) << " "
+             << (e.air.valid ? number(100.0 * e.air.rel_rmse) : std::string("nan")) << " "
+             << (e.air.valid ? number(e.air.mae) : std::string("nan")) << "\n";
         any = true;
       }
       // gnuplot does not count a block without records: keep every index in its place.
-      if (!any) data << "nan nan nan nan nan nan nan \"\" nan\n";
+      if (!any) data << "nan nan nan nan nan nan nan \"\" nan nan nan\n";
       data << "\n\n";
       if (any) here += std::to_string(k + 1) + " ";
     }
@@ -710,7 +726,9 @@ std::string writePlotData(const std::filesystem::path& path, const std::string& 
       {"vis_mae", {4, "vis_mae: mean |visibility - truth|"}},
       {"false_shadow_pct", {5, "false shadow: % of counted pixels"}},
       {"false_lit_pct", {6, "false lit: % of counted pixels"}},
-      {"shade_mae", {7, "shade_mae: mean |vis - truth| x N.L"}}};
+      {"shade_mae", {7, "shade_mae: mean |vis - truth| x N.L"}},
+      {"air_rel_rmse_pct", {10, "air light: relative RMSE against the truth, %"}},
+      {"air_mae", {11, "air light: mean |rendered - truth|"}}};
   std::string ycols, ylabels;
   for (const auto& metric : sweep.plot_metrics) {
     const auto it = metric_columns.find(metric);

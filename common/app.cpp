@@ -302,6 +302,7 @@ void Runner::setObjectModel(size_t index, const glm::mat4& model) {
   object.model = model;
   truth_.reset();  // the truth's triangles are in world space
   error_.valid = false;
+  params_.markDirty(kDirtyShadowMap);  // a moved caster moves its shadow
 }
 
 void Runner::drawInset(const Frame& frame, const Texture& depth, float near, float far,
@@ -333,7 +334,8 @@ void Runner::drawInset(const Frame& frame, const Texture& depth, float near, flo
 
 Runner::Runner(const std::string& lessonName, std::unique_ptr<Lesson> lesson, RunOptions options)
     : name_(lessonName), lesson_(std::move(lesson)), options_(std::move(options)) {
-  params_.addChoice("scene", scenePresets(), "torus_pyramid",
+  const std::vector<std::string> scenes = lesson_->scenes();
+  params_.addChoice("scene", scenes, scenes.front(),
                     "scene preset (sets light and camera defaults)", kDirtyScene | kDirtyShadowMap);
   std::vector<std::string> views = {"shaded", "visibility"};
   for (const auto& v : lesson_->debugViews()) views.push_back(v);
@@ -555,6 +557,7 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
     lesson_->render(frame);
     light_frustum_ = frame.light_view_projection;
     truth_area_radius_ = frame.truth_area_radius;
+    medium_ = frame.medium;
   }
   if (withPanel) {
     frame.bindTarget();
@@ -587,20 +590,24 @@ void Runner::showImage(const Frame& frame, const Image& image) {
 }
 
 std::vector<float> Runner::renderVisibility() {
+  return renderRed("visibility");
+}
+
+std::vector<float> Runner::renderRed(const std::string& mode) {
   const int w = options_.width, h = options_.height;
   gpu_->ensureTargets(w, h);
   const GLuint fbo = gpu_->float_target->id();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glClearColor(0, 0, 0, 0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  renderInto(fbo, w, h, "visibility", false, false);
+  renderInto(fbo, w, h, mode, false, false);
   std::vector<glm::vec4> rgba(static_cast<size_t>(w) * h);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
-  std::vector<float> visibility(rgba.size());
-  for (size_t i = 0; i < rgba.size(); ++i) visibility[i] = rgba[i].r;
-  return visibility;
+  std::vector<float> red(rgba.size());
+  for (size_t i = 0; i < rgba.size(); ++i) red[i] = rgba[i].r;
+  return red;
 }
 
 void Runner::resetGlState() {
@@ -714,10 +721,31 @@ const ErrorState& Runner::measureError() {
     truth_image_.rgba[i * 4 + 2] = counted ? grey : 60;
     truth_image_.rgba[i * 4 + 3] = 255;
   }
+  error_.metrics.air = AirMetrics{};
+  if (medium_) measureAir(surface);
   error_.valid = true;
   error_key_ = key;
   measure_->setEnabled(was_enabled);
   return error_;
+}
+
+void Runner::measureAir(const SurfaceBuffer& surface) {
+  // The lesson's air light alone, unscaled, against single scattering traced along the very
+  // eye rays of its pixels. The truth and error views then show the air.
+  const int w = options_.width, h = options_.height;
+  const std::vector<float> rendered = renderRed("air");
+  const glm::mat4 inverse_view_projection = glm::inverse(cameraProjection(w, h) * cameraView());
+  air_truth_ = truth_->airLight(surface, params_.at("camera.pos").v(), inverse_view_projection,
+                                scene_.camera.far, *medium_);
+  error_.metrics.air = compareAir(rendered, air_truth_);
+  error_.metrics.nonfinite_pixels += error_.metrics.air.nonfinite;
+  error_image_ = {w, h, airErrorImage(rendered, air_truth_.light)};
+  for (size_t i = 0; i < air_truth_.light.size(); ++i) {
+    const auto grey = static_cast<std::uint8_t>(
+        std::lround(255.0f * std::clamp(air_truth_.light[i], 0.0f, 1.0f)));
+    truth_image_.rgba[i * 4 + 0] = truth_image_.rgba[i * 4 + 1] = grey;
+    truth_image_.rgba[i * 4 + 2] = grey;
+  }
 }
 
 Image Runner::readImage() const {
@@ -762,6 +790,10 @@ void Runner::drawPanel(Frame& frame) {
                   e.false_lit_pct);
       ImGui::Text("  vis_mae %.4f  non-finite %lld%s", e.vis_mae, e.nonfinite_pixels,
                   error_key_ == errorKey() ? "" : "  (stale: updating)");
+      if (e.air.valid) {
+        ImGui::Text("  air: mae %.4f  rel. RMSE %.1f%%  (truth mean %.3f, noise %.4f)", e.air.mae,
+                    100.0 * e.air.rel_rmse, e.air.truth_mean, e.air.truth_noise);
+      }
     } else {
       ImGui::TextDisabled("vs truth: not measured yet");
     }
@@ -809,6 +841,13 @@ void Runner::writeReport(JsonWriter& json) {
     json.value("shade_mae", e.shade_mae);
     json.value("nonfinite_pixels", e.nonfinite_pixels);
     json.value("counted_pixels", e.counted_pixels);
+    if (e.air.valid) {
+      json.value("air_mae", e.air.mae);
+      json.value("air_rel_rmse", e.air.rel_rmse);
+      json.value("air_truth_mean", e.air.truth_mean);
+      json.value("air_truth_noise", e.air.truth_noise);
+      json.value("air_pixels", e.air.pixels);
+    }
     json.endObject();
   }
   json.endObject();

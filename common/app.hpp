@@ -56,6 +56,10 @@ struct Frame {
   // The light the truth should use: 0 = a point (hard shadows); a soft-shadow lesson sets
   // the radius of the area light its filter imitates.
   float truth_area_radius = 0.0f;
+  // A lesson with a participating medium (08) describes it here: the runner then also renders
+  // its view "air" (the in-scattered light alone, unscaled, in red) and measures it against
+  // Truth::airLight.
+  std::optional<AirMedium> medium;
 
   void bindTarget() const;
   // Binds the target and clears colour, depth and stencil (to the sky, by default).
@@ -95,6 +99,8 @@ class Lesson {
   // Shared parameters (light.fov, light.near, ...) this lesson has no use for: the runner
   // does not offer them.
   virtual std::vector<std::string> unusedSharedParams() const { return {}; }
+  // The scene presets the lesson offers, its default first.
+  virtual std::vector<std::string> scenes() const { return scenePresets(); }
   // A path next to the lesson's main.cpp, fixed at build time (never the working directory).
   static std::filesystem::path lessonFile(const std::string& lessonDir, const std::string& file) {
     return std::filesystem::path(lessonDir) / file;
@@ -153,6 +159,8 @@ class Runner {
   const ErrorState& lastError() const { return error_; }
   Image readImage() const;
   std::vector<float> renderVisibility();
+  // Renders `mode` into the float target and returns its red channel (visibility, air).
+  std::vector<float> renderRed(const std::string& mode);
 
   Params& params() { return params_; }
   Measure& measure() { return *measure_; }
@@ -219,6 +227,9 @@ class Runner {
   Image error_image_, truth_image_;
   std::optional<glm::mat4> light_frustum_;
   float truth_area_radius_ = 0.0f;
+  std::optional<AirMedium> medium_;
+  Truth::AirResult air_truth_;
+  void measureAir(const SurfaceBuffer& surface);
   glm::vec2 mouse_{-1.0f};
   bool mouse_down_ = false;
   double last_time_ = 0.0;

@@ -54,6 +54,12 @@ class Measure {
   double medianFrameMs() const;
   std::map<std::string, double> medianPassMs() const;
   const std::map<std::string, PassWork>& lastFrameWork() const { return last_work_; }
+  // The work of a pass that already ended in the frame in progress (null if none, or when
+  // measuring is off): a lesson can derive counters from it.
+  const PassWork* frameWork(const std::string& pass) const {
+    const auto it = work_.find(pass);
+    return enabled_ && it != work_.end() ? &it->second : nullptr;
+  }
   const std::map<std::string, long long>& lastFrameCounts() const { return last_counts_; }
   double lastFrameMs() const { return frame_ms_.empty() ? 0.0 : frame_ms_.back(); }
 

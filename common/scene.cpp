@@ -168,6 +168,37 @@ Scene torusPyramid() {
   return s;
 }
 
+// Lesson 08's dusty room (seed 000, "Combining Shadows with Atmospherics"): a floor and two
+// walls, a spotlight high in a corner shining down past a pillar, a floating sphere and a
+// torus, so the light shafts in the air are visibly cut by them.
+Scene room() {
+  Scene s;
+  const glm::mat4 one(1.0f);
+  const glm::vec3 plaster{0.72f, 0.7f, 0.66f};
+  s.objects.push_back(floorObject(6.0f, 0.0f));
+  // Walls receive but cast nothing: the light is inside the room, they bound what it sees.
+  s.objects.push_back({"back_wall", makePlane(6.0f, 3.0f),
+                       translate({0, 3, -5}) * glm::rotate(one, glm::radians(90.0f), {1, 0, 0}),
+                       plaster, false, true});
+  s.objects.push_back({"left_wall", makePlane(3.0f, 5.0f),
+                       translate({-6, 3, 0}) * glm::rotate(one, glm::radians(-90.0f), {0, 0, 1}),
+                       plaster, false, true});
+  s.objects.push_back({"pillar",
+                       makeBox({0.35f, 1.6f, 0.35f}),
+                       translate({-0.6f, 1.6f, -1.0f}),
+                       {0.55f, 0.45f, 0.4f}});
+  s.objects.push_back(
+      {"sphere", makeSphere(0.55f, 48, 24), translate({1.2f, 2.9f, -0.6f}), {0.5f, 0.8f, 0.4f}});
+  s.objects.push_back(
+      {"torus",
+       makeTorus(0.7f, 0.22f, 96, 48),
+       translate({0.9f, 0.92f, 1.4f}) * glm::rotate(one, glm::radians(80.0f), {1, 0, 0}),
+       {0.85f, 0.45f, 0.25f}});
+  s.light = {false, {3.6f, 5.6f, -2.4f}, {-0.8f, 0.0f, 0.6f}, 42.0f, 10.0f, 0.5f, 12.0f};
+  s.camera = {{-1.2f, 2.6f, 8.8f}, {0.2f, 1.8f, -1.0f}, 50.0f, 0.1f, 100.0f};
+  return s;
+}
+
 }  // namespace
 
 Scene makeScene(const std::string& preset) {
@@ -205,6 +236,8 @@ Scene makeScene(const std::string& preset) {
          {0.8f, 0.8f, 0.8f}});
     s.light = {true, {-2.0f, 4.0f, -1.0f}, {0.0f, 0.0f, 0.0f}, 60.0f, 10.0f, 1.0f, 7.5f};
     s.camera = {{0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, -1.0f}, 45.0f, 0.1f, 100.0f};
+  } else if (preset == "room") {
+    s = room();
   } else {
     throw std::invalid_argument("unknown scene '" + preset + "'");
   }

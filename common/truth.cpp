@@ -1,6 +1,8 @@
 // Ray-traced ground truth with Embree 3, and the error metrics against it.
 #include "truth.hpp"
 
+#include "sample_hash.hpp"
+
 #include <embree3/rtcore.h>
 
 #include <algorithm>
@@ -51,21 +53,6 @@ void onEmbreeError(void* user, RTCError code, const char* str) {
   if (sink->message.empty()) {
     sink->message = std::string(errorName(code)) + (str ? std::string(": ") + str : "");
   }
-}
-
-// Counter-based hash (lowbias32, C. Wellons): a sample's random numbers depend only on its
-// pixel and sample index, so results do not depend on thread scheduling.
-std::uint32_t hash32(std::uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return x;
-}
-
-float unitFloat(std::uint32_t h) {
-  return static_cast<float>(h >> 8) * 0x1p-24f;
 }
 
 // Shirley-Chiu concentric map: keeps the square's strata compact and equal-area on the disk.
@@ -248,30 +235,11 @@ std::vector<float> Truth::visibility(const SurfaceBuffer& surface, const TruthLi
   const int w = surface.width;
   const int h = surface.height;
   std::vector<float> out(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), kNotCounted);
-  const RTCScene scene = impl_->scene;
   const float offset = ray_offset_;
   const float inf = std::numeric_limits<float>::infinity();
 
-  // True when nothing blocks the ray from o along unit dir up to tfar.
-  auto unoccluded = [scene](const glm::vec3& o, const glm::vec3& dir, float tfar) {
-    if (!scene) return true;
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
-    RTCRay ray;
-    ray.org_x = o.x;
-    ray.org_y = o.y;
-    ray.org_z = o.z;
-    ray.tnear = 0.0f;
-    ray.dir_x = dir.x;
-    ray.dir_y = dir.y;
-    ray.dir_z = dir.z;
-    ray.time = 0.0f;
-    ray.tfar = tfar;
-    ray.mask = 0xFFFFFFFFu;
-    ray.id = 0;
-    ray.flags = 0;
-    rtcOccluded1(scene, &ctx, &ray);
-    return ray.tfar >= 0.0f;  // Embree sets tfar to -inf on a hit
+  auto unoccluded = [this](const glm::vec3& o, const glm::vec3& dir, float tfar) {
+    return this->unoccluded(o, dir, tfar);
   };
   // Toward a finite point: stop just short of it so the emitter itself never occludes.
   auto seesPoint = [&](const glm::vec3& o, const glm::vec3& target) {
@@ -360,6 +328,28 @@ std::vector<float> Truth::visibility(const SurfaceBuffer& surface, const TruthLi
   }
   impl_->check("tracing visibility rays");
   return out;
+}
+
+bool Truth::unoccluded(const glm::vec3& o, const glm::vec3& dir, float tfar) const {
+  const RTCScene scene = impl_->scene;
+  if (!scene) return true;
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  RTCRay ray;
+  ray.org_x = o.x;
+  ray.org_y = o.y;
+  ray.org_z = o.z;
+  ray.tnear = 0.0f;
+  ray.dir_x = dir.x;
+  ray.dir_y = dir.y;
+  ray.dir_z = dir.z;
+  ray.time = 0.0f;
+  ray.tfar = tfar;
+  ray.mask = 0xFFFFFFFFu;
+  ray.id = 0;
+  ray.flags = 0;
+  rtcOccluded1(scene, &ctx, &ray);
+  return ray.tfar >= 0.0f;  // Embree sets tfar to -inf on a hit
 }
 
 std::vector<float> Truth::facingWeight(const SurfaceBuffer& surface, const TruthLight& light) {

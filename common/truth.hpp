@@ -10,6 +10,8 @@
 
 namespace shadows {
 
+class SpotTexture;
+
 // Per-pixel surface the runner's geometry pass saw, rows bottom-up like glReadPixels.
 struct SurfaceBuffer {
   int width = 0;
@@ -24,6 +26,18 @@ struct TruthLight {
   bool directional = false;
   float radius = 0.0f;  // area light: disk radius around position, facing direction; 0 = point
   int samples = 64;     // area light: stratified samples (rounded to a square number)
+};
+
+// A participating medium for the truth (lesson 08, seed 000 "Combining Shadows with
+// Atmospherics"): homogeneous density inside a spotlight's frustum, from the light up to its
+// far plane, lit through the spotlight's texture and shadowed by the scene; single
+// scattering, no extinction (the air adds light and absorbs none).
+struct AirMedium {
+  float density = 0.0f;  // light scattered toward the eye per world unit of lit air
+  glm::vec3 light_position{0.0f};
+  glm::mat4 light_view_projection{1.0f};  // the spot's frustum
+  const SpotTexture* spot = nullptr;      // the spot's light at (s, t); null = 1 everywhere
+  int samples = 64;                       // stratified samples along each ray
 };
 
 // Value meaning "not counted" (no surface, or facing away from the light) in visibility images.
@@ -48,12 +62,35 @@ class Truth {
 
   float rayOffset() const { return ray_offset_; }
 
+  // True when nothing blocks the ray from `origin` along the unit `direction` up to `tfar`.
+  bool unoccluded(const glm::vec3& origin, const glm::vec3& direction, float tfar) const;
+
+  // Single scattering in a medium (lesson 08), integrated along every eye ray up to its first
+  // surface; see AirMedium. Deterministic like visibility().
+  struct AirResult {
+    std::vector<float> light;  // in-scattered light per pixel (0 where the ray misses the cone)
+    double noise = 0.0;        // mean over lit pixels of |half A - half B| / 2 (see air_truth.cpp)
+  };
+  AirResult airLight(const SurfaceBuffer& surface, const glm::vec3& eye,
+                     const glm::mat4& inverseViewProjection, float maxDistance,
+                     const struct AirMedium& medium) const;
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
   float ray_offset_;
 };
 
+// The air light against its truth, over the pixels where either is non-zero.
+struct AirMetrics {
+  bool valid = false;
+  double mae = 0.0;          // mean |rendered - truth|
+  double rel_rmse = 0.0;     // sqrt(mean (rendered - truth)^2) / sqrt(mean truth^2)
+  double truth_mean = 0.0;   // mean truth over the same pixels (the scale of the numbers)
+  double truth_noise = 0.0;  // the truth's own error estimate (AirResult::noise)
+  long long pixels = 0;
+  long long nonfinite = 0;
+};
 struct ErrorMetrics {
   std::string truth;               // which truth: "point" or "area r=<radius> n=<samples>"
   double false_shadow_pct = 0.0;   // truth lit (>= 0.5), rendered < 0.5, % of counted pixels
@@ -62,12 +99,19 @@ struct ErrorMetrics {
   double shade_mae = 0.0;          // the same weighted by N.L
   long long nonfinite_pixels = 0;  // NaN or Inf in rendered, over all pixels
   long long counted_pixels = 0;
+  AirMetrics air;  // lesson 08: the air light against Truth::airLight (valid only there)
 };
 
 // rendered: the lesson's view=visibility (one float per pixel, any value, NaN counted);
 // truth: from Truth::visibility; weight: from Truth::facingWeight. All the same size.
 ErrorMetrics compareVisibility(const std::vector<float>& rendered, const std::vector<float>& truth,
                                const std::vector<float>& weight);
+
+AirMetrics compareAir(const std::vector<float>& rendered, const Truth::AirResult& truth);
+// The error view for air: red where the picture has too much air light, blue too little,
+// brightness the size of the error relative to `scale` (the truth's largest value).
+std::vector<std::uint8_t> airErrorImage(const std::vector<float>& rendered,
+                                        const std::vector<float>& truth);
 
 // The `error` view: the shaded image dimmed, false shadow painted magenta, false lit cyan.
 // shadedRgba: 4 bytes per pixel, same size and row order as the other buffers.

@@ -20,10 +20,8 @@ for list in [0-9][0-9]_*/pictures.txt; do
   fi
   mkdir -p "$lesson/pictures"
   table="$lesson/pictures/numbers.md"
-  {
-    echo "| picture | settings | false shadow % | false lit % | vis_mae | frame ms (map cached) |"
-    echo "|---|---|---|---|---|---|"
-  } >"$table"
+  rows=()
+  air=0  # a lesson with a medium (08) reports the air's error too: two more columns
   while read -r file flags; do
     [[ -z $file || $file == \#* ]] && continue
     report=$(mktemp)
@@ -34,9 +32,24 @@ for list in [0-9][0-9]_*/pictures.txt; do
     # The truth and error views show a ray-traced picture, not the technique: no frame time.
     frame=$(num frame_ms)
     [[ $flags == *view=truth* || $flags == *view=error* ]] && frame="—"
-    echo "| $file | \`${flags:-defaults}\` | $(num false_shadow_pct) | $(num false_lit_pct) |" \
-      "$(num vis_mae) | $frame |" >>"$table"
+    row="| $file | \`${flags:-defaults}\` | $(num false_shadow_pct) | $(num false_lit_pct) | $(num vis_mae) | $frame |"
+    if grep -q '"air_rel_rmse"' "$report"; then
+      air=1
+      rel=$(grep -o '"air_rel_rmse": [-0-9.e+]*' "$report" | awk '{printf "%.3g", 100 * $2}')
+      row="$row $rel | $(num air_mae) |"
+    fi
+    rows+=("$row")
     rm -f "$report"
   done <"$list"
+  {
+    if ((air)); then
+      echo "| picture | settings | false shadow % | false lit % | vis_mae | frame ms (map cached) | air rel. RMSE % | air_mae |"
+      echo "|---|---|---|---|---|---|---|---|"
+    else
+      echo "| picture | settings | false shadow % | false lit % | vis_mae | frame ms (map cached) |"
+      echo "|---|---|---|---|---|---|"
+    fi
+    printf '%s\n' "${rows[@]}"
+  } >"$table"
   echo "pictures.sh: $lesson: $(grep -c '\.png' "$table") pictures, numbers in $table"
 done

@@ -238,8 +238,6 @@ TEST(Lesson03, EveryInputOfTheMapRendersItAgainAndTheCachedFrameMatchesAnUncache
 }
 
 TEST(Lesson03, MovingACasterRendersTheMapAgain) {
-  GTEST_SKIP() << "known bug: Runner::setObjectModel does not mark the shadow map dirty, so "
-                  "a moved caster leaves a stale map on screen with shadow.cache on";
   testing::expectACasterMoveRendersTheMapAgain(kLesson);
 }
 

@@ -272,8 +272,6 @@ TEST(Lesson04, EveryInputOfTheMapRendersItAgainAndTheCachedFrameMatchesAnUncache
 }
 
 TEST(Lesson04, MovingACasterRendersTheMapAgain) {
-  GTEST_SKIP() << "known bug: Runner::setObjectModel does not mark the shadow map dirty, so "
-                  "a moved caster leaves a stale map on screen with shadow.cache on";
   testing::expectACasterMoveRendersTheMapAgain(kLesson);
 }
 

@@ -308,8 +308,6 @@ TEST(Lesson05, EveryInputOfTheMapRendersItAgainAndTheCachedFrameMatchesAnUncache
 }
 
 TEST(Lesson05, MovingACasterRendersTheMapAgain) {
-  GTEST_SKIP() << "known bug: Runner::setObjectModel does not mark the shadow map dirty, so "
-                  "a moved caster leaves a stale map on screen with shadow.cache on";
   testing::expectACasterMoveRendersTheMapAgain(kLesson);
 }
 

@@ -1,0 +1,288 @@
+// Lesson 08: shadows in a dusty room (seed 000, "Combine with Projective Texturing for
+// Spotlight Shadows" and "Combining Shadows with Atmospherics", Cass Everitt's demo):
+//   1. construct the shadow map from the spotlight
+//   2. draw the scene with it, lit by the spotlight's projected texture
+//   3. modulate the projected spotlight texture with the projected shadow map
+//   4. blend slices facing the eye back to front, so the air glows where the light reaches
+//      it and goes dark behind the casters.
+// The slices are a Riemann sum of the light scattered along each eye ray; the truth
+// (common/air_truth.cpp) integrates the same light with Embree shadow rays.
+#include <imgui.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "app.hpp"
+#include "json.hpp"
+#include "shadow_map.hpp"
+#include "spotlight.hpp"
+
+namespace shadows {
+
+class Atmospherics final : public Lesson {
+ public:
+  std::string title() const override { return "Light shafts: shadowed spotlight in dusty air"; }
+  std::string seeds() const override {
+    return "seed 000: Combine with Projective Texturing for Spotlight Shadows; Combining "
+           "Shadows with Atmospherics";
+  }
+  std::vector<std::string> debugViews() const override {
+    return {"air", "surfaces", "spot", "light_depth"};
+  }
+  std::vector<std::string> scenes() const override {
+    std::vector<std::string> all = {"room"};
+    for (const auto& s : scenePresets()) all.push_back(s);
+    return all;
+  }
+
+  void declare(Params& p) override {
+    ShadowMap::declare(p);
+    p.addInt("air.slices", 64, 1, 256, "slices through the lit air, back to front");
+    p.addFloat("air.density", 0.08f, 0.0f, 1.0f, "dust: light scattered per world unit");
+    p.addBool("air.jitter", true, "move each pixel's sample within its slice: noise, not bands");
+    p.addBool("air.bound", true, "slices only over the depth range and screen area of the cone");
+    p.addBool("air.early_reject", true,
+              "slice fragments behind surfaces fail the depth test before they are shaded");
+    Param& image = p.addString("spot.image", "builtin",
+                               "builtin (a round spot) or the path of a PNG to project");
+    image.check = SpotTexture::checkParam;  // a missing or broken file is bad input, named
+    p.addFloat("spot.falloff", 0.35f, 0.0f, 1.0f,
+               "builtin spot: the outer part of its radius over which it fades");
+    p.addFloat("dimming", 0.4f, 0.0f, 1.0f, "light left in shadow: dimming + (1-dimming)*shade");
+  }
+
+  void init() override {
+    const auto common = commonShaderDir();
+    depth_ = Program(common / "light_depth.vert", common / "depth_only.frag");
+    room_ = Program(lessonFile(LESSON_DIR, "room.vert"), lessonFile(LESSON_DIR, "room.frag"));
+    for (int early = 0; early < 2; ++early) {
+      slices_[early] =
+          Program(lessonFile(LESSON_DIR, "slice.vert"), lessonFile(LESSON_DIR, "slice.frag"),
+                  {"EARLY_REJECT " + std::to_string(early)});
+    }
+    glGenVertexArrays(1, &empty_vao_);
+  }
+  ~Atmospherics() override {
+    if (empty_vao_ != 0) glDeleteVertexArrays(1, &empty_vao_);
+  }
+
+  void render(Frame& f) override {
+    const Params& p = f.params;
+    loadSpot(p.at("spot.image").s(), p.at("spot.falloff").f());
+    // 1. The shadow map, lesson 04's default bias (back faces + glPolygonOffset(1.1, 4)).
+    if (map_.prepare(f)) {
+      auto timing = f.measure.pass("shadow");
+      map_.beginRender();
+      PassState state;
+      state.cull = true;
+      state.cull_face = GL_FRONT;
+      state.polygon_offset = true;
+      state.offset_factor = 1.1f;
+      state.offset_units = 4.0f;
+      state.apply();
+      const glm::mat4 light_view_projection = map_.lightViewProjection();
+      depth_.set("uLightViewProjection", light_view_projection);
+      f.drawObjects(depth_, Objects::Casters, &light_view_projection);
+      PassState{}.apply();
+    }
+    if (map_.drawDepthView(f)) return;
+
+    const glm::mat4 cone = coneOfLight(f);
+    f.medium = AirMedium{p.at("air.density").f(), f.light.position, cone, &spot_, 64};
+
+    // 2 and 3. The surfaces, lit through the spot texture and the shadow map.
+    {
+      auto timing = f.measure.pass("surfaces");
+      f.clearTarget(f.mode == "air" || f.mode == "visibility" ? glm::vec3(0.0f)
+                                                              : glm::vec3(0.02f, 0.02f, 0.03f));
+      bindLightTextures();
+      room_.set("uViewProjection", f.projection * f.view);
+      room_.set("uShadowMatrix", map_.textureMatrix());
+      room_.set("uSpotMatrix", biasMatrix() * cone);
+      room_.set("uLightPos", f.light.position);
+      room_.set("uEye", f.eye);
+      room_.set("uDimming", p.at("dimming").f());
+      room_.set("uOutput", f.mode == "visibility" ? 1
+                           : f.mode == "spot"     ? 2
+                           : f.mode == "air"      ? 3
+                                                  : 0);
+      room_.set("uSpot", 0);
+      room_.set("uShadowMap", 1);
+      f.drawObjects(room_, Objects::All);
+    }
+    // 4. The air.
+    if (f.mode == "shaded" || f.mode == "air") drawSlices(f, cone);
+    if (f.mode == "shaded" || f.mode == "surfaces") map_.drawInset(f);
+  }
+
+  void panel(Frame& f) override {
+    ImGui::Text("slices %d over view depth %.2f .. %.2f (%s)", slices_drawn_, near_, far_,
+                f.params.at("air.bound").b() ? "the cone's" : "the whole view");
+    ImGui::Text("slice fragments passed %lld", passed_);
+  }
+
+  void report(JsonWriter& json) const override {
+    json.value("air_depth_near", near_);
+    json.value("air_depth_far", far_);
+    json.value("air_step", step_);
+  }
+
+ private:
+  // The lit air: the spot's frustum from the light to the farthest point of the scene, so it
+  // is the same whatever the map's near and far (light.near/far, shadow.fit) are set to.
+  static glm::mat4 coneOfLight(const Frame& f) {
+    LightFrustum frustum = f.light.frustum(1.0f);
+    float near = frustum.near, far = frustum.far;
+    if (fitNearFar(f.light.view, f.scene.bounds(), frustum.directional, near, far)) {
+      frustum.far = far;
+      frustum.near = frustum.directional ? near : far * 1e-3f;
+    }
+    return lightProjection(frustum) * f.light.view;
+  }
+
+  void loadSpot(const std::string& path, float falloff) {
+    const std::string key =
+        SpotTexture::isBuiltin(path) ? "builtin " + std::to_string(falloff) : path;
+    if (key == spot_key_) return;
+    spot_ =
+        SpotTexture::isBuiltin(path) ? SpotTexture::builtin(falloff) : SpotTexture::fromPng(path);
+    const Image& image = spot_.image();
+    spot_texture_ = Texture::color(image.width, image.height, GL_RGBA8);
+    spot_texture_.upload(GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    spot_texture_.setFilter(GL_NEAREST);  // the truth reads the same texels
+    spot_texture_.setWrap(GL_CLAMP_TO_BORDER, GL_CLAMP_TO_BORDER);
+    spot_texture_.setBorder(glm::vec4(0.0f));  // no light outside the frustum
+    spot_key_ = key;
+  }
+
+  void bindLightTextures() const {
+    spot_texture_.bind(0);
+    map_.texture().bind(1);
+  }
+
+  // Where the slices go: the view-depth range of the cone (the light's frustum) and, for each
+  // slice, the screen rectangle around the polygon its plane cuts out of the frustum; or the
+  // whole view's depth and the whole screen.
+  void sliceBounds(const Frame& f, const glm::mat4& cone, int count) {
+    const bool bound = f.params.at("air.bound").b();
+    std::vector<glm::vec3> points;  // view space
+    if (bound) {
+      // The frustum's corners: near plane 0-3, far plane 4-7 (a spot's near corners lie a
+      // hair from its apex).
+      const glm::mat4 inverse = glm::inverse(cone);
+      for (float z : {-1.0f, 1.0f}) {
+        for (glm::vec2 c :
+             {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+          const glm::vec4 corner = inverse * glm::vec4(c, z, 1.0f);
+          points.push_back(f.view * glm::vec4(glm::vec3(corner) / corner.w, 1.0f));
+        }
+      }
+    } else {
+      const Bounds b = f.scene.bounds();
+      for (int i = 0; i < 8; ++i) {
+        const glm::vec3 corner{i & 1 ? b.max.x : b.min.x, i & 2 ? b.max.y : b.min.y,
+                               i & 4 ? b.max.z : b.min.z};
+        points.push_back(f.view * glm::vec4(corner, 1.0f));
+      }
+    }
+    near_ = 1e30f, far_ = 0.0f;
+    for (const glm::vec3& p : points) near_ = std::min(near_, -p.z), far_ = std::max(far_, -p.z);
+    near_ = std::max(near_, kEyeNear);
+    far_ = std::min(far_, 100.0f);
+    step_ = far_ > near_ ? (far_ - near_) / static_cast<float>(count) : 0.0f;
+    rects_.assign(static_cast<size_t>(count), glm::vec4(-1.0f, -1.0f, 1.0f, 1.0f));
+    if (!bound) return;
+    // The frustum's 12 edges: around the near plane, around the far plane, and between them.
+    const int edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                              {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+    for (int i = 0; i < count; ++i) {
+      const float depth = far_ - (static_cast<float>(i) + 0.5f) * step_;
+      glm::vec2 lo(1e30f), hi(-1e30f);
+      for (const auto& e : edges) {
+        const glm::vec3 a = points[static_cast<size_t>(e[0])],
+                        b = points[static_cast<size_t>(e[1])];
+        const float da = -a.z - depth, db = -b.z - depth;
+        if (da * db > 0.0f || da == db) continue;  // the edge does not cross this plane
+        const glm::vec3 crossing = a + (b - a) * (da / (da - db));
+        const glm::vec4 clip = f.projection * glm::vec4(crossing, 1.0f);
+        lo = glm::min(lo, glm::vec2(clip) / clip.w);
+        hi = glm::max(hi, glm::vec2(clip) / clip.w);
+      }
+      // No crossing: the plane misses the pyramid, and an empty rectangle draws nothing.
+      rects_[static_cast<size_t>(i)] =
+          lo.x > hi.x ? glm::vec4(0.0f)
+                      : glm::vec4(glm::max(lo, glm::vec2(-1.0f)), glm::min(hi, glm::vec2(1.0f)));
+    }
+  }
+
+  void drawSlices(Frame& f, const glm::mat4& cone) {
+    drawSlicesTimed(f, cone);
+    // Fragments the slices rasterized (llvmpipe counts them before any test), and of those
+    // the ones shaded: only those that passed the depth test when it runs first.
+    if (const PassWork* work = f.measure.frameWork("air")) {
+      const long long shaded =
+          f.params.at("air.early_reject").b() ? passed_ : work->fragment_invocations;
+      f.measure.count("air_fragments_shaded", shaded);
+      f.measure.count("air_fragments_skipped", work->fragment_invocations - shaded);
+    }
+  }
+
+  void drawSlicesTimed(Frame& f, const glm::mat4& cone) {
+    const Params& p = f.params;
+    auto timing = f.measure.pass("air");
+    slices_drawn_ = p.at("air.slices").i();
+    sliceBounds(f, cone, slices_drawn_);
+    passed_ = 0;
+    if (!(step_ > 0.0f)) return;  // the cone lies behind the eye
+    const bool early = p.at("air.early_reject").b();
+    const Program& slices = slices_[early ? 1 : 0];
+    const float tan_y = std::tan(glm::radians(p.at("camera.fov").f()) * 0.5f);
+    const float aspect = static_cast<float>(f.width) / static_cast<float>(std::max(f.height, 1));
+    glProgramUniform4fv(slices.id(), slices.location("uRects"), slices_drawn_, &rects_[0][0]);
+    slices.set("uFar", far_);
+    slices.set("uStep", step_);
+    slices.set("uProjection", f.projection);
+    slices.set("uInverseView", glm::inverse(f.view));
+    slices.set("uTanHalfFov", glm::vec2(tan_y * aspect, tan_y));
+    slices.set("uShadowMatrix", map_.textureMatrix());
+    slices.set("uSpotMatrix", biasMatrix() * cone);
+    slices.set("uDensity", p.at("air.density").f());
+    slices.set("uJitter", p.at("air.jitter").b() ? 1 : 0);
+    slices.set("uOutput", f.mode == "air" ? 1 : 0);
+    slices.set("uAirColor", glm::vec3(1.0f, 0.93f, 0.78f));
+    slices.set("uSpot", 0);
+    slices.set("uShadowMap", 1);
+    bindLightTextures();
+    PassState air;
+    air.depth_write = false;  // tested against the surfaces, never hiding them
+    air.blend = true;
+    air.blend_dst = GL_ONE;  // additive: the air adds light
+    air.apply();
+    slices.use();
+    glBindVertexArray(empty_vao_);
+    query_.begin();
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, slices_drawn_);
+    query_.end();
+    countDrawCall();
+    passed_ = query_.result();
+    f.measure.count("air_slices", slices_drawn_);
+    f.measure.count("air_fragments_passed", passed_);
+    PassState{}.apply();
+  }
+
+  ShadowMap map_;
+  Program depth_, room_, slices_[2];  // slices_[1]: EARLY_REJECT
+  SpotTexture spot_;
+  Texture spot_texture_;
+  std::string spot_key_;
+  GLuint empty_vao_ = 0;
+  SamplesPassedQuery query_;
+  static constexpr float kEyeNear = 0.1f;  // the camera's near plane (scene presets)
+  std::vector<glm::vec4> rects_;           // per slice, back to front
+  int slices_drawn_ = 0;
+  float near_ = 0.0f, far_ = 0.0f, step_ = 0.0f;
+  long long passed_ = 0;
+};
+
+SHADOWS_LESSON(Atmospherics);
+
+}  // namespace shadows

@@ -1,0 +1,34 @@
+#version 330 core
+// Step 2 of the slide, "draw the scene with the shadow map", lit by the projected spotlight.
+#include "spot.glsl"
+in vec3 vWorld;
+in vec3 vNormal;
+in vec4 vShadowCoord;
+in vec4 vSpotCoord;
+uniform vec3 uColor;
+uniform vec3 uLightPos;
+uniform vec3 uEye;
+uniform float uDimming;
+uniform int uOutput;  // 0 lit surfaces, 1 visibility, 2 the spot without shadows, 3 black
+out vec4 outColor;
+
+void main() {
+  float shadow = shadowTest(vShadowCoord);
+  if (uOutput == 1) {
+    outColor = vec4(vec3(shadow), 1.0);
+    return;
+  }
+  if (uOutput == 3) {  // the air alone: surfaces only hide what lies behind them
+    outColor = vec4(0.0, 0.0, 0.0, 1.0);
+    return;
+  }
+  float shade = uOutput == 2 ? 1.0 : uDimming + (1.0 - uDimming) * shadow;
+  float spot = spotLight(vSpotCoord);
+  vec3 n = normalize(vNormal);
+  vec3 l = normalize(uLightPos - vWorld);
+  float nl = max(dot(n, l), 0.0);
+  vec3 h = normalize(l + normalize(uEye - vWorld));
+  float spec = nl > 0.0 ? pow(max(dot(n, h), 0.0), 48.0) : 0.0;
+  vec3 lit = uColor * (0.06 + 0.94 * nl * spot * shade) + vec3(0.3) * spec * spot * shadow;
+  outColor = vec4(lit, 1.0);
+}

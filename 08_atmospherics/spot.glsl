@@ -1,0 +1,17 @@
+// Seed 000, "Combine with Projective Texturing for Spotlight Shadows": the spotlight is a
+// texture projected through the light's frustum, modulated by the projected shadow map.
+// Each at its own B * P * V_light * p (the spot's frustum is the lit cone; the map's may be
+// fitted to the casters); surfaces and air slices look up the same two.
+uniform sampler2D uSpot;             // NEAREST, 0 outside: the truth reads the same texels
+uniform sampler2DShadow uShadowMap;  // compare mode on
+
+float spotLight(vec4 c) {
+  if (c.w <= 0.0) return 0.0;  // behind the light
+  return dot(texture(uSpot, c.xy / c.w).rgb, vec3(0.2126, 0.7152, 0.0722));
+}
+
+float shadowTest(vec4 c) {
+  if (c.w <= 0.0) return 1.0;
+  c.z = min(c.z, c.w);  // beyond the far plane nothing casts (lesson 03)
+  return textureProj(uShadowMap, c);
+}

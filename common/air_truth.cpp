@@ -1,0 +1,164 @@
+// The truth for lesson 08's air: single scattering along each eye ray, with Embree shadow rays.
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <thread>
+
+#include "sample_hash.hpp"
+#include "spotlight.hpp"
+#include "truth.hpp"
+
+namespace shadows {
+
+namespace {
+
+// The part [t0, t1] of the ray o + t d (0 <= t <= tmax) inside the light's frustum, up to its
+// far plane: every plane of clip space is linear in t. False when the ray misses it.
+bool clipToFrustum(const glm::mat4& lightViewProjection, const glm::vec3& o, const glm::vec3& d,
+                   float tmax, float& t0, float& t1) {
+  const glm::vec4 c0 = lightViewProjection * glm::vec4(o, 1.0f);
+  const glm::vec4 c1 = lightViewProjection * glm::vec4(d, 0.0f);
+  // a + b t >= 0 for w ± x, w ± y, w - z (far) and w (in front of the light).
+  const glm::vec2 planes[] = {{c0.w + c0.x, c1.w + c1.x}, {c0.w - c0.x, c1.w - c1.x},
+                              {c0.w + c0.y, c1.w + c1.y}, {c0.w - c0.y, c1.w - c1.y},
+                              {c0.w - c0.z, c1.w - c1.z}, {c0.w, c1.w}};
+  t0 = 0.0f;
+  t1 = tmax;
+  for (const glm::vec2& p : planes) {
+    if (p.y > 0.0f) {
+      t0 = std::max(t0, -p.x / p.y);
+    } else if (p.y < 0.0f) {
+      t1 = std::min(t1, -p.x / p.y);
+    } else if (p.x < 0.0f) {
+      return false;
+    }
+  }
+  return t1 > t0;
+}
+
+}  // namespace
+
+Truth::AirResult Truth::airLight(const SurfaceBuffer& surface, const glm::vec3& eye,
+                                 const glm::mat4& inverseViewProjection, float maxDistance,
+                                 const AirMedium& medium) const {
+  const int w = surface.width, h = surface.height;
+  if (surface.position.size() != static_cast<size_t>(w) * static_cast<size_t>(h)) {
+    throw std::invalid_argument("airLight: surface buffer does not match its size");
+  }
+  const int n = std::max(2, medium.samples / 2 * 2);  // even: two interleaved halves
+  AirResult result;
+  result.light.assign(surface.position.size(), 0.0f);
+  std::vector<float> half_difference(surface.position.size(), -1.0f);
+
+  auto pixel = [&](int x, int y) {
+    const size_t i = static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x);
+    // The eye ray through the pixel centre (rows bottom-up, as glReadPixels gives them).
+    const glm::vec2 ndc((static_cast<float>(x) + 0.5f) / static_cast<float>(w) * 2.0f - 1.0f,
+                        (static_cast<float>(y) + 0.5f) / static_cast<float>(h) * 2.0f - 1.0f);
+    const glm::vec4 far_point = inverseViewProjection * glm::vec4(ndc, 1.0f, 1.0f);
+    const glm::vec3 d = glm::normalize(glm::vec3(far_point) / far_point.w - eye);
+    // Up to the first surface, or the far distance where the pixel sees none (its geometric
+    // normal was cleared to 0).
+    const bool hit = surface.normal[i] != glm::vec4(0.0f);
+    const float tmax = hit ? glm::distance(eye, glm::vec3(surface.position[i])) : maxDistance;
+    float t0 = 0.0f, t1 = 0.0f;
+    if (!clipToFrustum(medium.light_view_projection, eye, d, tmax, t0, t1)) return;
+    const std::uint32_t seed = hash32(static_cast<std::uint32_t>(i) * 0x9E3779B9u + 0x1234567u);
+    double half[2] = {0.0, 0.0};
+    for (int k = 0; k < n; ++k) {
+      const float u = (static_cast<float>(k) + unitFloat(hash32(seed + static_cast<uint32_t>(k)))) /
+                      static_cast<float>(n);
+      const glm::vec3 p = eye + d * (t0 + u * (t1 - t0));
+      const glm::vec4 c = medium.light_view_projection * glm::vec4(p, 1.0f);
+      const glm::vec2 st = glm::vec2(c) / c.w * 0.5f + 0.5f;
+      const float spot = medium.spot != nullptr ? medium.spot->value(st) : 1.0f;
+      if (spot <= 0.0f) continue;
+      const glm::vec3 to_light = medium.light_position - p;
+      const float dist = glm::length(to_light);
+      // Stop just short of the light, as the surface truth does.
+      if (dist > 0.0f && !unoccluded(p, to_light / dist, dist * (1.0f - 1e-4f))) continue;
+      half[k % 2] += spot;
+    }
+    // Each half is a stratified estimate of its own (every other stratum): their spread is
+    // the estimate's error, and their mean the estimate.
+    const double scale = static_cast<double>(medium.density) * (t1 - t0) * 2.0 / n;
+    result.light[i] = static_cast<float>(0.5 * scale * (half[0] + half[1]));
+    half_difference[i] = static_cast<float>(0.5 * scale * std::abs(half[0] - half[1]));
+  };
+
+  const int threads =
+      std::max(1, std::min(static_cast<int>(std::thread::hardware_concurrency()), h));
+  auto work = [&](int first) {
+    for (int y = first; y < h; y += threads) {
+      for (int x = 0; x < w; ++x) pixel(x, y);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+  work(0);
+  for (std::thread& th : pool) th.join();
+
+  double sum = 0.0;
+  long long lit = 0;
+  for (float v : half_difference) {
+    if (v < 0.0f) continue;
+    sum += v;
+    ++lit;
+  }
+  result.noise = lit > 0 ? sum / static_cast<double>(lit) : 0.0;
+  return result;
+}
+
+AirMetrics compareAir(const std::vector<float>& rendered, const Truth::AirResult& truth) {
+  if (rendered.size() != truth.light.size()) {
+    throw std::invalid_argument("compareAir: buffers differ in size");
+  }
+  AirMetrics m;
+  double abs_sum = 0.0, sq_sum = 0.0, truth_sq = 0.0, truth_sum = 0.0;
+  for (size_t i = 0; i < rendered.size(); ++i) {
+    const double t = truth.light[i];
+    double r = rendered[i];
+    if (!std::isfinite(r)) {
+      ++m.nonfinite;
+      r = t + 1.0;  // wrong by a whole unit of light
+    }
+    if (r == 0.0 && t == 0.0) continue;
+    ++m.pixels;
+    abs_sum += std::abs(r - t);
+    sq_sum += (r - t) * (r - t);
+    truth_sq += t * t;
+    truth_sum += t;
+  }
+  m.truth_noise = truth.noise;
+  if (m.pixels > 0) {
+    const double n = static_cast<double>(m.pixels);
+    m.valid = true;
+    m.mae = abs_sum / n;
+    m.truth_mean = truth_sum / n;
+    m.rel_rmse = truth_sq > 0.0 ? std::sqrt(sq_sum / truth_sq) : 0.0;
+  }
+  return m;
+}
+
+std::vector<std::uint8_t> airErrorImage(const std::vector<float>& rendered,
+                                        const std::vector<float>& truth) {
+  float top = 1e-6f;
+  for (float t : truth) top = std::max(top, t);
+  std::vector<std::uint8_t> out(rendered.size() * 4, 0);
+  for (size_t i = 0; i < rendered.size(); ++i) {
+    const float r = std::isfinite(rendered[i]) ? rendered[i] : truth[i] + top;
+    // Signed error, 4x magnified against the brightest air: red too much, blue too little;
+    // a dim grey of the truth underneath so the shafts stay recognizable.
+    const float e = std::clamp(4.0f * (r - truth[i]) / top, -1.0f, 1.0f);
+    const float base = 0.25f * std::clamp(truth[i] / top, 0.0f, 1.0f);
+    out[i * 4 + 0] =
+        static_cast<std::uint8_t>(std::lround(255.0f * std::min(1.0f, base + std::max(e, 0.0f))));
+    out[i * 4 + 1] = static_cast<std::uint8_t>(std::lround(255.0f * base));
+    out[i * 4 + 2] =
+        static_cast<std::uint8_t>(std::lround(255.0f * std::min(1.0f, base + std::max(-e, 0.0f))));
+    out[i * 4 + 3] = 255;
+  }
+  return out;
+}
+
+}  // namespace shadows
