@@ -147,6 +147,18 @@ inline std::vector<std::string> shadowMapInputs() {
           "scene=grazing"};
 }
 
+// The same for lessons 06 and 07 (common/depth_readback): no depth format, but a copy path
+// and the light pass's depth bits, both of which re-create the map's storage.
+inline std::vector<std::string> readbackMapInputs() {
+  std::vector<std::string> inputs;
+  for (const std::string& input : shadowMapInputs()) {
+    if (input.rfind("shadow.format=", 0) != 0) inputs.push_back(input);
+  }
+  inputs.insert(inputs.end(), {"map.path=copy_texture", "map.depth_bits=16", "bias.steps=3",
+                               "bias.factor=1", "bias.mode=texgen"});
+  return inputs;
+}
+
 // With the cache on, each change in `inputs` renders the map again, and what the frame shows
 // is what a map rendered from scratch (cache off) shows; a frame with no change renders none.
 inline void expectEveryMapInputRendersTheMapAgain(const std::string& lesson,

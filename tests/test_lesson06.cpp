@@ -155,6 +155,14 @@ TEST(Lesson06, PassTwoLightsOnlyWhatTheAlphaTestPasses) {
   EXPECT_EQ(runner->measure().lastFrameWork().count("pass2"), 0u);
 }
 
+TEST(Lesson06, EveryInputOfTheMapRendersItAgainAndTheCachedFrameMatchesAnUncachedOne) {
+  std::vector<std::string> inputs = testing::readbackMapInputs();
+  const std::vector<std::string> own = {"map.encoding=linear"};
+  inputs.insert(inputs.end(), own.begin(), own.end());
+  testing::expectEveryMapInputRendersTheMapAgain(kLesson, inputs);
+  testing::expectACasterMoveRendersTheMapAgain(kLesson);
+}
+
 TEST(Lesson06, EveryViewRendersCleanAndDistinct) {
   auto runner = startLesson(kLesson, {});
   testing::expectEveryViewCleanAndDistinct(*runner);

@@ -121,6 +121,14 @@ TEST(Lesson07, EveryCopyPathSeesTheSameSixteenBitsButForOneUlp) {
   }
 }
 
+TEST(Lesson07, EveryInputOfTheMapRendersItAgainAndTheCachedFrameMatchesAnUncachedOne) {
+  std::vector<std::string> inputs = testing::readbackMapInputs();
+  const std::vector<std::string> own = {};
+  inputs.insert(inputs.end(), own.begin(), own.end());
+  testing::expectEveryMapInputRendersTheMapAgain(kLesson, inputs);
+  testing::expectACasterMoveRendersTheMapAgain(kLesson);
+}
+
 TEST(Lesson07, EveryViewRendersCleanAndDistinct) {
   auto runner = startLesson(kLesson, {});
   testing::expectEveryViewCleanAndDistinct(*runner);

@@ -90,6 +90,11 @@ TEST(Lesson08, ABadSpotImageIsRefusedByName) {
   EXPECT_EQ(error.find('\n'), std::string::npos) << "one line";
 }
 
+TEST(Lesson08, EveryInputOfTheMapRendersItAgainAndTheCachedFrameMatchesAnUncachedOne) {
+  testing::expectEveryMapInputRendersTheMapAgain(kLesson, testing::shadowMapInputs());
+  testing::expectACasterMoveRendersTheMapAgain(kLesson);
+}
+
 TEST(Lesson08, EveryViewRendersCleanAndDistinct) {
   auto runner = startLesson(kLesson, {});
   testing::expectEveryViewCleanAndDistinct(*runner);
