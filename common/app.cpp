@@ -69,6 +69,33 @@ const char* kUsage =
     "  --help               this text\n"
     "exit codes: 0 ok, 1 runtime failure (no context, shader error, GL error), 2 bad input\n";
 
+bool isDevice(const std::string& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  return std::filesystem::exists(status) && !std::filesystem::is_regular_file(status);
+}
+
+// "" or why `path` cannot be the output `flag` names (exit 2 before anything is rendered).
+std::string outputProblem(const std::string& flag, const std::string& path) {
+  const std::string shown = "'" + printable(path) + "'";
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) return flag + ": cannot write " + shown + " (it is a directory)";
+  const std::string name = std::filesystem::path(path).filename().string();
+  if (name.size() > 255 || path.size() > 4095) {
+    return flag + ": cannot write " + shown.substr(0, 60) + "... (file name too long)";
+  }
+  if (!canWrite(path)) {
+    return flag + ": cannot write " + shown + " (no such directory, or read-only)";
+  }
+  if (flag != "--report" && !isDevice(path)) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension != ".png") return flag + ": expected a .png file name, got " + shown;
+  }
+  return {};
+}
+
 bool parsePositive(const std::string& text, int& out, int max) {
   if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos) return false;
   if (text.size() > 6) return false;
@@ -120,19 +147,29 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
     } else if (arg == "--out" || arg == "--report" || arg == "--truth-out" ||
                arg == "--error-out") {
       if (!next(value)) return arg + ": expected a file name";
-      if (!canWrite(value)) {
-        std::error_code ec;
-        return arg + ": cannot write '" + value + "' (" +
-               (std::filesystem::is_directory(value, ec) ? "it is a directory"
-                                                         : "no such directory, or read-only") +
-               ")";
-      }
+      if (std::string why = outputProblem(arg, value); !why.empty()) return why;
       (arg == "--out"         ? o.out
        : arg == "--report"    ? o.report
        : arg == "--truth-out" ? o.truth_out
                               : o.error_out) = value;
     } else {
-      return "unknown option '" + arg + "'; see --help";
+      return "unknown option '" + printable(arg) + "'; see --help";
+    }
+  }
+  // Two outputs into one regular file would leave only the last: refuse it up front.
+  const std::pair<const char*, const std::string*> outputs[] = {{"--out", &o.out},
+                                                                {"--report", &o.report},
+                                                                {"--truth-out", &o.truth_out},
+                                                                {"--error-out", &o.error_out}};
+  for (size_t i = 0; i < std::size(outputs); ++i) {
+    for (size_t j = i + 1; j < std::size(outputs); ++j) {
+      const std::string &a = *outputs[i].second, &b = *outputs[j].second;
+      if (a.empty() || b.empty() || isDevice(a)) continue;
+      std::error_code ec;
+      if (std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec)) {
+        return std::string(outputs[i].first) + " and " + outputs[j].first +
+               " name the same file '" + printable(a) + "'";
+      }
     }
   }
   return {};
@@ -902,20 +939,7 @@ int Runner::runHeadless() {
   if (options_.truth || !options_.truth_out.empty() || !options_.error_out.empty()) {
     measureError();
   }
-  if (!writePng(out, image)) {
-    std::fprintf(stderr, "%s: cannot write %s\n", name_.c_str(), out.c_str());
-    return 1;
-  }
-  if (!options_.truth_out.empty() && !writePng(options_.truth_out, truth_image_)) return 1;
-  if (!options_.error_out.empty() && !writePng(options_.error_out, error_image_)) return 1;
-  if (!options_.report.empty()) {
-    JsonWriter json;
-    writeReport(json);
-    if (!writeOutputFile(options_.report, json.str() + "\n")) {
-      std::fprintf(stderr, "%s: cannot write %s\n", name_.c_str(), options_.report.c_str());
-      return 1;
-    }
-  }
+  if (!writeOutputs(out, image)) return 1;
   const int errors = glErrors();
   std::printf("%-30s %dx%d  frame %7.2f ms", out.c_str(), options_.width, options_.height,
               measure_->medianFrameMs());
@@ -934,6 +958,22 @@ int Runner::runHeadless() {
     return 1;
   }
   return 0;
+}
+
+bool Runner::writeOutputs(const std::string& out, const Image& image) {
+  // Every output of the run, or none: a picture without its report is a half answer.
+  OutputBatch batch;
+  if (!out.empty()) batch.add(out, encodePng(image));
+  if (!options_.truth_out.empty()) batch.add(options_.truth_out, encodePng(truth_image_));
+  if (!options_.error_out.empty()) batch.add(options_.error_out, encodePng(error_image_));
+  if (!options_.report.empty()) {
+    JsonWriter json;
+    writeReport(json);
+    batch.add(options_.report, json.str() + "\n");
+  }
+  if (batch.commit()) return true;
+  std::fprintf(stderr, "%s: %s\n", name_.c_str(), batch.failure().c_str());
+  return false;
 }
 
 int Runner::runWindow() {
@@ -972,6 +1012,7 @@ int Runner::runWindow() {
   // With --out, a windowed run renders --frames frames, saves the window and exits: that is
   // how the tests check the real window path under xvfb.
   int frames_left = options_.out.empty() ? -1 : options_.frames + 1;
+  bool outputs_failed = false;
   while (!glfwWindowShouldClose(window) && frames_left != 0) {
     glfwPollEvents();
     const ImGuiIO& io = ImGui::GetIO();
@@ -1024,13 +1065,24 @@ int Runner::runWindow() {
         screenshot_requested_ = false;
         saveScreenshot(w, h, {});
       }
-      if (frames_left > 0 && --frames_left == 0) saveScreenshot(w, h, options_.out);
+      if (frames_left > 0 && --frames_left == 0) {
+        // The same outputs as a headless run: the picture, and the report, truth and error
+        // pictures asked for, all or none.
+        Image image{w, h, std::vector<std::uint8_t>(static_cast<size_t>(w) * h * 4)};
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+        if (options_.truth || !options_.truth_out.empty() || !options_.error_out.empty()) {
+          measureError();
+        }
+        outputs_failed = !writeOutputs(options_.out, image);
+      }
     }
     glfwSwapBuffers(window);
   }
   releaseGl();
   glfwDestroyWindow(window);
-  return GlErrorLog::count() > 0 ? 1 : 0;
+  return GlErrorLog::count() > 0 || outputs_failed ? 1 : 0;
 }
 
 int runLessonMain(int argc, char** argv) {

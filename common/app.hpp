@@ -202,6 +202,9 @@ class Runner {
   Light currentLight() const;
   std::string errorKey() const;
   void saveScreenshot(int width, int height, const std::string& file);
+  // The picture (to `out`) and the --report, --truth-out, --error-out asked for, all or none;
+  // false (and one line on stderr) when any cannot be written.
+  bool writeOutputs(const std::string& out, const Image& image);
   void renderInto(GLuint target, int width, int height, const std::string& mode, bool timed,
                   bool withPanel);
   void drawPanel(Frame& frame);

@@ -116,6 +116,9 @@ TEST_P(Cli, BadInputExitsTwoWithOneLineAndWritesNothing) {
   EXPECT_EQ(r.output.rfind(kLesson + ": ", 0), 0u) << r.output;
 }
 
+// A name longer than the file system takes (255 bytes): refused before rendering.
+const std::string kLongName = "--out /tmp/" + std::string(300, 'a') + ".png";
+
 INSTANTIATE_TEST_SUITE_P(
     EveryKind, Cli,
     ::testing::Values("--bogus", "--set shadow.sise=512", "--set shadow.size=abc",
@@ -125,7 +128,29 @@ INSTANTIATE_TEST_SUITE_P(
                       "--set noequals", "--set", "--size 0x10", "--size 640", "--size axb",
                       "--frames 0", "--frames -3", "--backend vulkan",
                       "--out /nonexistent/dir/x.png", "--report /nonexistent/r.json",
-                      "--error-out /proc/none/e.png", "--truth-out"));
+                      "--error-out /proc/none/e.png", "--truth-out", "--out /tmp/x.jpg",
+                      "--error-out /tmp/e.bmp", kLongName.c_str()));
+
+TEST_F(Cli, AnOutputThatFailsLeavesNoneOfTheOthersAndSaysWhich) {
+  // /dev/full accepts the open and fails the write: the report, truth or error picture
+  // cannot be written, so the picture written before it must not stay either.
+  for (const char* flag : {"--report", "--truth-out", "--error-out"}) {
+    const std::string out = (dir / "x.png").string();
+    const Result r = run(kLesson, "--headless --size 64x48 --frames 1 --out " + out + " " + flag +
+                                      " /dev/full");
+    EXPECT_EQ(r.exit_code, 1) << flag << "\n" << r.output;
+    EXPECT_NE(r.output.find("cannot write /dev/full"), std::string::npos) << r.output;
+    EXPECT_TRUE(dirIsEmpty()) << flag << ": a partial set of outputs was left";
+  }
+}
+
+TEST_F(Cli, TwoOutputsIntoOneFileAreRefused) {
+  const std::string same = (dir / "p.png").string();
+  const Result r = run(kLesson, "--headless --size 64x48 --out " + same + " --error-out " + same);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("name the same file"), std::string::npos) << r.output;
+  EXPECT_TRUE(dirIsEmpty());
+}
 
 std::vector<std::string> allLessons() {
   std::vector<std::string> names;

@@ -18,3 +18,15 @@ for binary in "$@"; do
   fi
   echo "$name: window ok, $size bytes"
 done
+# A window run honours the same output flags as a headless one, all or nothing.
+first=$1
+xvfb-run -a -s "-screen 0 1024x768x24" "$first" --window --size 320x240 --frames 1 \
+  --out "$out/w.png" --report "$out/w.json" --error-out "$out/w_error.png"
+test -s "$out/w.json" && test -s "$out/w_error.png" && grep -q '"false_shadow_pct"' "$out/w.json"
+if xvfb-run -a -s "-screen 0 1024x768x24" "$first" --window --size 320x240 --frames 1 \
+  --out "$out/f.png" --report /dev/full; then
+  echo "a window run whose report cannot be written exited 0"
+  exit 1
+fi
+test ! -e "$out/f.png" || { echo "the window's picture stayed without its report"; exit 1; }
+echo "window outputs ok"
