@@ -47,7 +47,7 @@ Image makeSlide(int n) {
 }
 
 bool isBuiltin(const std::string& image) {
-  return image.empty() || image == "builtin";
+  return image == "builtin";
 }
 
 }  // namespace
@@ -69,17 +69,9 @@ class ProjectiveTexture final : public Lesson {
   void declare(Params& p) override {
     Param& image = p.addString("projector.image", "builtin",
                                "builtin (a procedural slide) or the path of a PNG to project");
-    // Checked when set, so a missing or broken file is bad input, named, before any frame.
-    image.check = [](const std::string& path) -> std::string {
-      if (isBuiltin(path)) return {};
-      try {
-        const Image loaded = readPng(path);
-        if (loaded.width > 8192 || loaded.height > 8192) return path + ": larger than 8192";
-      } catch (const std::exception& e) {
-        return e.what();
-      }
-      return {};
-    };
+    // Checked when set, so a missing, broken or non-PNG file is bad input, named, before any
+    // frame.
+    image.check = checkPngParam;
     p.addFloat("falloff", 0, 0, 1,
                "spotlight falloff: the slide fades over this part of the cone, 0 = off");
     p.addBool("fix.q_test", true, "no light where q <= 0, i.e. behind the projector");

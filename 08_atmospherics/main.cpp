@@ -44,7 +44,7 @@ class Atmospherics final : public Lesson {
               "slice fragments behind surfaces fail the depth test before they are shaded");
     Param& image = p.addString("spot.image", "builtin",
                                "builtin (a round spot) or the path of a PNG to project");
-    image.check = SpotTexture::checkParam;  // a missing or broken file is bad input, named
+    image.check = checkPngParam;  // a missing or broken file is bad input, named
     p.addFloat("spot.falloff", 0.35f, 0.0f, 1.0f,
                "builtin spot: the outer part of its radius over which it fades");
     p.addFloat("dimming", 0.4f, 0.0f, 1.0f, "light left in shadow: dimming + (1-dimming)*shade");

@@ -79,7 +79,8 @@ bool isDevice(const std::string& path) {
 std::string outputProblem(const std::string& flag, const std::string& path) {
   const std::string shown = "'" + printable(path) + "'";
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) return flag + ": cannot write " + shown + " (it is a directory)";
+  if (std::filesystem::is_directory(path, ec))
+    return flag + ": cannot write " + shown + " (it is a directory)";
   const std::string name = std::filesystem::path(path).filename().string();
   if (name.size() > 255 || path.size() > 4095) {
     return flag + ": cannot write " + shown.substr(0, 60) + "... (file name too long)";

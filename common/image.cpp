@@ -6,9 +6,9 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <cstring>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -95,7 +95,8 @@ bool OutputBatch::commit() {
     if (bytes.empty()) return fail(path, "nothing to write");
     std::error_code ec;
     const auto status = std::filesystem::status(path, ec);
-    const bool device = std::filesystem::exists(status) && !std::filesystem::is_regular_file(status);
+    const bool device =
+        std::filesystem::exists(status) && !std::filesystem::is_regular_file(status);
     const std::string target = device ? path : path + ".partial";
     errno = 0;
     std::FILE* out = std::fopen(target.c_str(), "wb");
@@ -113,6 +114,18 @@ bool OutputBatch::commit() {
     if (ec) return fail(files_[i].first, ec.message());
   }
   return true;
+}
+
+std::string checkPngParam(const std::string& value) {
+  if (value == "builtin") return {};
+  if (value.empty()) return "expected 'builtin' or the path of a PNG file";
+  try {
+    const Image loaded = readPng(value);
+    if (loaded.width > 8192 || loaded.height > 8192) return printable(value) + ": larger than 8192";
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return {};
 }
 
 Image readPng(const std::string& path) {

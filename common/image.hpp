@@ -39,6 +39,10 @@ class OutputBatch {
   std::string failure_;
 };
 
+// The `check` of an image parameter: "" for "builtin" or a PNG that loads (at most 8192
+// pixels a side), else one line saying what is accepted or what is wrong with the file.
+std::string checkPngParam(const std::string& value);
+
 // `text` with control characters (a newline in a file name, say) written as escapes, so a
 // message stays on one line.
 std::string printable(const std::string& text);

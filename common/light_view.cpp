@@ -2,13 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace shadows {
 
 void LightView::declareSize(Params& p) {
   constexpr auto kMap = kDirtyShadowMap | kDirtyResources;
   p.addInt("shadow.size", 1024, 64, 4096, "shadow map width in texels", kMap).logarithmic = true;
-  p.addInt("shadow.height", 0, 0, 4096, "shadow map height (0 = square)", kMap);
+  // 0 (square) or the same range as the width: a 64x1 map would "match" absurd area lights.
+  p.addInt("shadow.height", 0, 0, 4096, "shadow map height (0 = square, else 64..4096)", kMap)
+      .check = [](const std::string& text) -> std::string {
+    const double rows = std::strtod(text.c_str(), nullptr);
+    return rows == 0.0 || rows >= 64.0 ? "" : "expected 0 (square) or 64..4096, got " + text;
+  };
 }
 
 void LightView::declareFit(Params& p) {

@@ -1,5 +1,7 @@
 #include "params.hpp"
 
+#include "image.hpp"
+
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -72,7 +74,7 @@ std::string allowed(const Param& p) {
     case ParamKind::Choice:
       return "one of " + joined(p.choices);
     case ParamKind::String:
-      return "any text";
+      return "text on one line";
   }
   return {};
 }
@@ -211,7 +213,8 @@ std::string Params::set(const std::string& name, const std::string& text) {
     return "unknown parameter '" + name + "'" +
            (guess.empty() ? "" : "; did you mean '" + guess + "'?") + " Parameters: " + names;
   }
-  const std::string bad = name + ": '" + text + "' is not allowed; expected " + allowed(*p);
+  const std::string bad =
+      name + ": '" + printable(text) + "' is not allowed; expected " + allowed(*p);
   double parsed[3] = {0, 0, 0};
   switch (p->kind) {
     case ParamKind::Float:

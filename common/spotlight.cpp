@@ -30,17 +30,6 @@ SpotTexture SpotTexture::fromPng(const std::string& path) {
   return spot;
 }
 
-std::string SpotTexture::checkParam(const std::string& path) {
-  if (isBuiltin(path)) return {};
-  try {
-    const Image loaded = readPng(path);
-    if (loaded.width > 8192 || loaded.height > 8192) return path + ": larger than 8192";
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return {};
-}
-
 float SpotTexture::value(glm::vec2 st) const {
   if (!(st.x >= 0.0f && st.x <= 1.0f && st.y >= 0.0f && st.y <= 1.0f) || image_.width == 0) {
     return 0.0f;

@@ -18,10 +18,7 @@ class SpotTexture {
   static SpotTexture builtin(float falloff, int size = 256);
   // A PNG (rows bottom-up); throws std::runtime_error naming the file.
   static SpotTexture fromPng(const std::string& path);
-  // "" when `path` is "builtin" or a PNG that loads, else one line saying what is wrong:
-  // the `check` of an image parameter.
-  static std::string checkParam(const std::string& path);
-  static bool isBuiltin(const std::string& path) { return path.empty() || path == "builtin"; }
+  static bool isBuiltin(const std::string& path) { return path == "builtin"; }
 
   // The light at texture coordinates (s, t) in [0, 1]² (0 outside), as the GPU's NEAREST
   // lookup of the same image gives it: luminance of the texel, in [0, 1].

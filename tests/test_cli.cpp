@@ -129,15 +129,15 @@ INSTANTIATE_TEST_SUITE_P(
                       "--frames 0", "--frames -3", "--backend vulkan",
                       "--out /nonexistent/dir/x.png", "--report /nonexistent/r.json",
                       "--error-out /proc/none/e.png", "--truth-out", "--out /tmp/x.jpg",
-                      "--error-out /tmp/e.bmp", kLongName.c_str()));
+                      "--error-out /tmp/e.bmp", "--set shadow.height=1", kLongName.c_str()));
 
 TEST_F(Cli, AnOutputThatFailsLeavesNoneOfTheOthersAndSaysWhich) {
   // /dev/full accepts the open and fails the write: the report, truth or error picture
   // cannot be written, so the picture written before it must not stay either.
   for (const char* flag : {"--report", "--truth-out", "--error-out"}) {
     const std::string out = (dir / "x.png").string();
-    const Result r = run(kLesson, "--headless --size 64x48 --frames 1 --out " + out + " " + flag +
-                                      " /dev/full");
+    const Result r =
+        run(kLesson, "--headless --size 64x48 --frames 1 --out " + out + " " + flag + " /dev/full");
     EXPECT_EQ(r.exit_code, 1) << flag << "\n" << r.output;
     EXPECT_NE(r.output.find("cannot write /dev/full"), std::string::npos) << r.output;
     EXPECT_TRUE(dirIsEmpty()) << flag << ": a partial set of outputs was left";

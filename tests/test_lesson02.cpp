@@ -304,5 +304,29 @@ TEST(Lesson02, PanelShowsTheImagePathFieldWhichLoadsATypedPng) {
   EXPECT_EQ(runner->glErrors(), 0);
 }
 
+TEST(Lesson02, TheSlideMustBeBuiltinOrAPngAndEveryRefusalIsOneLine) {
+  auto runner = testing::startLesson("02_projective_texture", {}, 64, 48);
+  const std::string bmp = "/tmp/shadows_lesson02_slide.bmp";
+  {
+    std::FILE* f = std::fopen(bmp.c_str(), "wb");
+    ASSERT_NE(f, nullptr);
+    const char header[] = "BM\x46\0\0\0\0\0\0\0\x36\0\0\0";  // a BMP, which stb would read
+    std::fwrite(header, 1, sizeof header, f);
+    std::fclose(f);
+  }
+  Params& p = runner->params();
+  const std::string empty = p.set("projector.image", "");
+  EXPECT_NE(empty.find("expected 'builtin' or the path of a PNG"), std::string::npos) << empty;
+  const std::string not_png = p.set("projector.image", bmp);
+  EXPECT_NE(not_png.find("not a PNG"), std::string::npos) << not_png;
+  const std::string newline = p.set("projector.image", "/tmp/a\nb.png");
+  EXPECT_NE(newline, "");
+  for (const std::string& message : {empty, not_png, newline}) {
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  EXPECT_EQ(p.at("projector.image").s(), "builtin") << "refused values change nothing";
+  std::remove(bmp.c_str());
+}
+
 }  // namespace
 }  // namespace shadows
