@@ -312,7 +312,10 @@ void Runner::drawObjects(const Frame& frame, const Program& program, Objects whi
   program.use();
   for (size_t i = 0; i < scene_.objects.size(); ++i) {
     const SceneObject& object = scene_.objects[i];
-    if (which == Objects::Casters && !object.caster) continue;
+    const Light& l = frame.light;
+    if (which == Objects::Casters && !object.castsFrom(l.position, l.directional, l.direction)) {
+      continue;
+    }
     if (which == Objects::Receivers && !object.receiver) continue;
     if (cull != nullptr) {
       const Bounds b = object.worldBounds();

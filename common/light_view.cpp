@@ -37,8 +37,9 @@ bool LightView::update(Frame& f, glm::ivec2 size, bool recreated, std::uint32_t 
   size_ = size;
   frustum_ = f.light.frustum(static_cast<float>(size.x) / static_cast<float>(size.y));
   if (p.at("shadow.fit").b()) {
-    fitNearFar(f.light.view, f.scene.bounds(/*castersOnly=*/true), frustum_.directional,
-               frustum_.near, frustum_.far);
+    const Light& l = f.light;
+    fitNearFar(f.light.view, f.scene.casterBounds(l.position, l.directional, l.direction),
+               frustum_.directional, frustum_.near, frustum_.far);
   }
   projection_ = lightProjection(frustum_);
   view_ = f.light.view;

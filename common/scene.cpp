@@ -107,6 +107,25 @@ Bounds SceneObject::worldBounds() const {
   return b;
 }
 
+bool SceneObject::castsFrom(glm::vec3 lightPosition, bool directional,
+                            glm::vec3 lightDirection) const {
+  if (caster) return true;
+  if (mesh.vertices.empty()) return false;
+  const glm::vec3 point = glm::vec3(model * glm::vec4(mesh.vertices[0].position, 1.0f));
+  const glm::vec3 normal = glm::mat3(glm::transpose(glm::inverse(model))) * mesh.vertices[0].normal;
+  const glm::vec3 to_light = directional ? -lightDirection : lightPosition - point;
+  return glm::dot(normal, to_light) <= 0.0f;
+}
+
+Bounds Scene::casterBounds(glm::vec3 lightPosition, bool directional,
+                           glm::vec3 lightDirection) const {
+  Bounds b;
+  for (const auto& o : objects) {
+    if (o.castsFrom(lightPosition, directional, lightDirection)) b.add(o.worldBounds());
+  }
+  return b;
+}
+
 Bounds Scene::bounds(bool castersOnly) const {
   Bounds b;
   for (const auto& o : objects) {

@@ -45,9 +45,16 @@ struct SceneObject {
   MeshData mesh;
   glm::mat4 model{1.0f};
   glm::vec3 color{0.8f};
-  bool caster = true;    // drawn into shadow maps
+  // Drawn into shadow maps. false marks a one-sided plane (a floor, a wall) that cannot
+  // shadow anything on its front side, so a map may skip it while the light is in front of
+  // it; from behind it hides everything in front (castsFrom).
+  bool caster = true;
   bool receiver = true;  // shows shadows
   Bounds worldBounds() const;
+  // Whether the object can cast a shadow lit from this light: casters always, a receiver-only
+  // plane when the light is behind it (or in its plane). Skipping work must never change the
+  // answer: this decides per frame.
+  bool castsFrom(glm::vec3 lightPosition, bool directional, glm::vec3 lightDirection) const;
 };
 
 struct LightSetup {
@@ -72,6 +79,8 @@ struct Scene {
   LightSetup light;
   CameraSetup camera;
   Bounds bounds(bool castersOnly = false) const;
+  // The bounds of what casts a shadow from this light (SceneObject::castsFrom).
+  Bounds casterBounds(glm::vec3 lightPosition, bool directional, glm::vec3 lightDirection) const;
   // All triangles in world space, in object order (the truth's input).
   void worldTriangles(std::vector<glm::vec3>& positions, std::vector<glm::uvec3>& triangles) const;
 };
