@@ -52,7 +52,9 @@ class DualTexture8bit final : public Lesson {
       map_.drawInset(f, /*fullscreen=*/true);
       return;
     }
-    f.clearTarget();
+    // The visibility view clears to 0 (shadowed), so a pass switched off leaves its pixels
+    // shadowed, not the sky's colour (which would read as lit).
+    f.clearTarget(f.mode == "visibility" ? glm::vec3(0.0f) : Frame::kSky);
     for (const Program& program : passes_) {
       program.set("uViewProjection", f.projection * f.view);
       program.set("uRampLookup", f.params.at("ramp.lookup").b() ? 1 : 0);

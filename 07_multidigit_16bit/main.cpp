@@ -54,7 +54,9 @@ class MultiDigit16bit final : public Lesson {
       drawDigits(f, f.mode == "little_digit" ? 1 : 0, /*inset=*/false);
       return;
     }
-    f.clearTarget();  // colour, depth, and the stencil to 0
+    // Colour, depth, and the stencil to 0; the visibility view to 0 (shadowed), so a pass
+    // switched off leaves its pixels shadowed, not the sky's colour.
+    f.clearTarget(f.mode == "visibility" ? glm::vec3(0.0f) : Frame::kSky);
     const int output = f.mode == "visibility" ? 1 : f.mode == "passes" ? 2 : 0;
     for (const Program& program : passes_) {
       program.set("uViewProjection", f.projection * f.view);

@@ -129,8 +129,10 @@ class Atmospherics final : public Lesson {
  private:
   // The lit air: the spot's frustum from the light to the farthest point of the scene, so it
   // is the same whatever the map's near and far (light.near/far, shadow.fit) are set to.
-  static glm::mat4 coneOfLight(const Frame& f) {
-    LightFrustum frustum = f.light.frustum(1.0f);
+  glm::mat4 coneOfLight(const Frame& f) const {
+    // The map's aspect, so the map covers the whole lit cone (a non-square map widens it).
+    LightFrustum frustum = f.light.frustum(static_cast<float>(map_.width()) /
+                                           static_cast<float>(std::max(map_.height(), 1)));
     float near = frustum.near, far = frustum.far;
     if (fitNearFar(f.light.view, f.scene.bounds(), frustum.directional, near, far)) {
       frustum.far = far;

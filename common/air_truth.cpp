@@ -135,7 +135,8 @@ AirMetrics compareAir(const std::vector<float>& rendered, const Truth::AirResult
     m.valid = true;
     m.mae = abs_sum / n;
     m.truth_mean = truth_sum / n;
-    m.rel_rmse = truth_sq > 0.0 ? std::sqrt(sq_sum / truth_sq) : 0.0;
+    // No light in the truth but some in the picture: wholly wrong, not 0 % wrong.
+    m.rel_rmse = truth_sq > 0.0 ? std::sqrt(sq_sum / truth_sq) : sq_sum > 0.0 ? 1.0 : 0.0;
   }
   return m;
 }

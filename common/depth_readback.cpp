@@ -31,7 +31,7 @@ void DepthReadback::declare(Params& p, int digits, bool linearChoice) {
   p.addFloat("bias.factor", 2.0f, 0.0f, 20.0f, "glPolygonOffset factor (slope scale)",
              kDirtyShadowMap);
   const std::string step = digits == 1 ? "1/255" : "1/65535";
-  p.addFloat("bias.steps", 1.5f, 0.0f, digits == 1 ? 64.0f : 4096.0f,
+  p.addFloat("bias.steps", 3.0f, 0.0f, digits == 1 ? 64.0f : 4096.0f,
              "constant bias in map steps (" + step + " of the depth range)", kDirtyShadowMap)
       .logarithmic = digits == 2;
   p.addBool("inset", true, "show the map in a corner");
@@ -55,11 +55,40 @@ bool driverReadbackRoundsToNearest(int digits, int depthBits) {
   const int steps = digits == 1 ? reinterpret_cast<std::uint8_t*>(value)[0] : value[0];
   return steps == 101;
 }
+// The size of one glPolygonOffset `unit` in window depth for a depth buffer of these bits:
+// "the smallest value guaranteed to produce a resolvable offset", whose size the GL leaves
+// to the driver (llvmpipe's is 2^-23 for 24 bits, twice 1 / (2^24 - 1)). Measured: a
+// triangle at depth 0.5, offset by 1000 units, into a 1x1 depth buffer.
+float driverOffsetUnit(int depthBits, const Program& flat) {
+  const Texture depth = Texture::depth(1, 1, depthBits);
+  Framebuffer target;
+  target.attachDepth(depth);
+  glViewport(0, 0, 1, 1);
+  glClearDepth(1.0);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  PassState offset;
+  offset.depth_func = GL_ALWAYS;
+  offset.polygon_offset = true;
+  offset.offset_units = 1000.0f;
+  offset.apply();
+  GLuint vao = 0;
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  flat.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);  // fullscreen.vert: z = 0, window depth 0.5
+  glDeleteVertexArrays(1, &vao);
+  PassState{}.apply();
+  float value = 0.5f;
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &value);
+  return std::max((value - 0.5f) / 1000.0f, 1e-12f);
+}
+
 }  // namespace
 
 void DepthReadback::init() {
   const auto dir = commonShaderDir();
   light_program_ = Program(dir / "readback_light.vert", dir / "readback_light.frag");
+  probe_program_ = Program(dir / "fullscreen.vert", dir / "depth_only.frag");
   if (digits_ == 1) {
     // 256 texels, texel i holding i (the last one step short: see rampSteps).
     std::vector<std::uint8_t> ramp(256);
@@ -110,6 +139,7 @@ bool DepthReadback::prepare(Frame& f) {
 void DepthReadback::recreate(glm::ivec2 size) {
   size_ = size;
   nearest_ = driverReadbackRoundsToNearest(digits_, depth_bits_);
+  offset_unit_ = driverOffsetUnit(depth_bits_, probe_program_);
   const glm::vec4 nothing_in_front(1.0f);  // outside the map: the cleared value, lit
   light_depth_ = Texture::depth(size.x, size.y, depth_bits_);
   light_target_ = std::make_unique<Framebuffer>();
@@ -164,11 +194,10 @@ void DepthReadback::render(Frame& f) {
     glViewport(0, 0, size_.x, size_.y);
     PassState state;
     // 000: "perform bias during depth map construct ... so bias will be in depth buffer
-    // space". One map step is about 2^(bits - 8 digits) steps of the depth buffer.
+    // space". `steps` map steps in glPolygonOffset units, as this driver sizes a unit.
     state.polygon_offset = offset && !linear_;
     state.offset_factor = factor;
-    const float buffer_steps = depth_bits_ == 16 ? 65535.0f : 16777215.0f;
-    state.offset_units = steps * buffer_steps / (digits_ == 1 ? 255.0f : 65535.0f);
+    state.offset_units = steps / (digits_ == 1 ? 255.0f : 65535.0f) / offset_unit_;
     state.apply();
     glClearColor(1.0f, 1.0f, 1.0f, 1.0f);  // linear: "nothing in front" is the top step
     glClear(GL_DEPTH_BUFFER_BIT | (linear_ ? GL_COLOR_BUFFER_BIT : 0u));

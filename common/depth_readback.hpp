@@ -46,6 +46,8 @@ class DepthReadback {
   const std::string& path() const { return path_; }
   // Whether this driver's glReadPixels rounds depth to the nearest step (else it truncates).
   bool readbackRoundsToNearest() const { return nearest_; }
+  // One glPolygonOffset unit in window depth on this driver and depth buffer (measured).
+  float offsetUnit() const { return offset_unit_; }
   long long bytesPerFrame() const {
     return static_cast<long long>(light_.size().x) * light_.size().y * digits_;
   }
@@ -62,7 +64,7 @@ class DepthReadback {
 
   int digits_;
   LightView light_;
-  Program light_program_;
+  Program light_program_, probe_program_;
   Texture ramp_;                       // Tex1: 1D (one digit) or 2D (two digits) ramp
   Texture ramp_big_;                   // two digits: the 1D ramp of pass 2 (big digit only)
   Texture light_depth_, light_color_;  // what the light pass renders into
@@ -76,6 +78,7 @@ class DepthReadback {
   std::string path_, storage_key_;
   bool linear_ = false, inset_ = true;
   bool nearest_ = true;  // whether glReadPixels rounds to nearest on this driver (depthToSteps)
+  float offset_unit_ = 1.0f / 16777215.0f;  // one glPolygonOffset unit, measured (window depth)
 };
 
 }  // namespace shadows

@@ -85,7 +85,8 @@ class Truth {
 struct AirMetrics {
   bool valid = false;
   double mae = 0.0;          // mean |rendered - truth|
-  double rel_rmse = 0.0;     // sqrt(mean (rendered - truth)^2) / sqrt(mean truth^2)
+  double rel_rmse = 0.0;     // sqrt(mean (rendered - truth)^2) / sqrt(mean truth^2); 1 when
+                             // the truth has no light and the picture has some
   double truth_mean = 0.0;   // mean truth over the same pixels (the scale of the numbers)
   double truth_noise = 0.0;  // the truth's own error estimate (AirResult::noise)
   long long pixels = 0;

@@ -154,7 +154,7 @@ inline std::vector<std::string> readbackMapInputs() {
   for (const std::string& input : shadowMapInputs()) {
     if (input.rfind("shadow.format=", 0) != 0) inputs.push_back(input);
   }
-  inputs.insert(inputs.end(), {"map.path=copy_texture", "map.depth_bits=16", "bias.steps=3",
+  inputs.insert(inputs.end(), {"map.path=copy_texture", "map.depth_bits=16", "bias.steps=5",
                                "bias.factor=1", "bias.mode=texgen"});
   return inputs;
 }
