@@ -99,7 +99,8 @@ class ProjectiveTexture final : public Lesson {
     f.bindTarget();
     const float grey = f.mode == "visibility" ? 0.0f : 0.13f;  // visibility: 0, not counted
     glClearColor(grey, grey, grey * 1.2f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glClearStencil(0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     if (f.mode == "slide") {
       f.drawImageInset(slide_, /*fullscreen=*/true);
       return;
@@ -153,18 +154,27 @@ class ProjectiveTexture final : public Lesson {
   void projectorPass(Frame& f, const glm::vec4& projector_plane) {
     auto timing = f.measure.pass("projector");
     const std::string& behind = f.params.at("fix.behind").choice();
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE);
-    glDepthFunc(GL_EQUAL);
-    glDepthMask(GL_FALSE);
+    PassState add;
+    add.blend = true;
+    add.blend_dst = GL_ONE;  // the projector's light adds to the ambient
+    add.depth_func = GL_EQUAL;
+    add.depth_write = false;
+    // Each pixel takes the projector's light once: the first fragment to pass marks the
+    // stencil, any other at that pixel (clip's LEQUAL lets a nearly coincident back face
+    // through at silhouettes) is rejected.
+    add.stencil_test = true;
+    add.stencil_func = GL_EQUAL;
+    add.stencil_ref = 0;
+    add.stencil_pass = GL_INCR;
     if (behind == "clip") {
       // Clipping makes new vertices whose depths are not bit-identical to pass 1's, so the
       // cut triangles would fail an EQUAL test: compare LEQUAL, nudged toward the eye.
       glEnable(GL_CLIP_DISTANCE0);
-      glEnable(GL_POLYGON_OFFSET_FILL);
-      glPolygonOffset(-1.0f, -1.0f);
-      glDepthFunc(GL_LEQUAL);
+      add.polygon_offset = true;
+      add.offset_factor = add.offset_units = -1.0f;
+      add.depth_func = GL_LEQUAL;
     }
+    add.apply();
     program_.set("uClip", behind == "clip" ? 1 : 0);
     program_.set("uPass", 1);
     skipped_ = 0;
@@ -177,10 +187,7 @@ class ProjectiveTexture final : public Lesson {
     }
     f.measure.count("skipped_behind_projector", skipped_);
     glDisable(GL_CLIP_DISTANCE0);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glDisable(GL_BLEND);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
+    PassState{}.apply();
   }
 
   // Uploads the slide when the parameter names another one. Its border is black: outside

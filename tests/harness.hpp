@@ -113,6 +113,8 @@ inline std::vector<std::vector<std::string>> shadowMapSliderExtremes() {
           {"light.pos=-50,0.01,0", "light.target=0,0,0"},  // grazing
           {"light.type=directional", "light.extent=0.5"},
           {"camera.pos=0,0.6,0", "camera.target=0,0.6,0"},
+          {"light.pos=3,-6,4"},                             // below the floor
+          {"camera.pos=0.6,0.45,1.6", "light.pos=-3,7,2"},  // the eye inside the sphere
           {"dimming=0"},
           {"dimming=1"}};
 }

@@ -304,6 +304,22 @@ TEST(Lesson02, PanelShowsTheImagePathFieldWhichLoadsATypedPng) {
   EXPECT_EQ(runner->glErrors(), 0);
 }
 
+TEST(Lesson02, EveryPixelTakesTheProjectorsLightAtMostOnce) {
+  // With fix.behind=clip the projector pass compares LEQUAL with an offset toward the eye, and
+  // at silhouettes a back face nearly as deep as the front one used to pass too: light added
+  // twice, visibility above 1 (vis_mae 1.005 from this light). The stencil lets one through.
+  for (const char* behind : {"clip", "skip", "off"}) {
+    auto runner = testing::startLesson(
+        "02_projective_texture", {"light.pos=0.6,0.45,1.6", std::string("fix.behind=") + behind});
+    runner->renderFrame();
+    const std::vector<float> visibility = runner->renderVisibility();
+    const float most = *std::max_element(visibility.begin(), visibility.end());
+    EXPECT_LE(most, 1.0f) << behind;
+    EXPECT_LE(runner->measureError().metrics.vis_mae, 1.0) << behind;
+    EXPECT_EQ(runner->glErrors(), 0);
+  }
+}
+
 TEST(Lesson02, TheSlideMustBeBuiltinOrAPngAndEveryRefusalIsOneLine) {
   auto runner = testing::startLesson("02_projective_texture", {}, 64, 48);
   const std::string bmp = "/tmp/shadows_lesson02_slide.bmp";

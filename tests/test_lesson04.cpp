@@ -100,6 +100,26 @@ TEST(Lesson04, TheDefaultsOffsetTakesAcneOffTheBackFacesOfACoarseMap) {
   }
 }
 
+TEST(Lesson04, ALightBelowTheFloorIsShadowedByTheFloor) {
+  // The floor receives but casts nothing while the light is above it; from below it hides
+  // everything, in the truth and so in the map (SceneObject::castsFrom). Before, it was
+  // skipped regardless: 34-100 % false lit.
+  for (const std::string scene : {"torus_pyramid", "cubes"}) {
+    const ErrorMetrics e = measure({"scene=" + scene, "light.type=spot", "light.pos=3,-6,4"});
+    EXPECT_GT(e.counted_pixels, 1000) << scene;
+    EXPECT_LE(e.false_lit_pct, 1.0) << scene;
+    EXPECT_LE(e.false_shadow_pct, 1.0) << scene;
+  }
+}
+
+TEST(Lesson04, TheInsideOfAnObjectIsNotCounted) {
+  // The eye inside the sphere sees only its inner faces, which face away: nothing to count,
+  // where counting them read 100 % false lit.
+  const ErrorMetrics e = measure({"camera.pos=0.6,0.45,1.6", "camera.target=0,0.5,0"});
+  EXPECT_EQ(e.counted_pixels, 0);
+  EXPECT_EQ(e.false_lit_pct, 0.0);
+}
+
 TEST(Lesson04, BothFailuresAreReachable) {
   // Too little bias: acne on every lit caster (lesson 03's picture).
   const ErrorMetrics acne = measure({"bias.mode=none", "shadow.size=2048"});
