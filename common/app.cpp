@@ -537,12 +537,12 @@ int Runner::glErrors() const {
   return GlErrorLog::poll();
 }
 
-void Runner::renderFrame() {
+void Runner::renderFrame(bool timed) {
   const GLuint target = window_ ? 0 : gpu_->target->id();
   int w = options_.width, h = options_.height;
   if (window_) glfwGetFramebufferSize(gpu_->window, &w, &h);
   const bool panel = gpu_->imgui && (window_ || options_.panel);
-  renderInto(target, w, h, params_.at("view").choice(), true, panel);
+  renderInto(target, w, h, params_.at("view").choice(), timed, panel);
   GlErrorLog::poll();
 }
 
@@ -799,50 +799,87 @@ Image Runner::readImage() const {
   return image;
 }
 
+std::string Runner::costSummary() const {
+  // The report's numbers (median of the timed frames so far), so panel and report agree.
+  const size_t frames = measure_->timedFrames();
+  if (frames == 0) return "frame: measuring...";
+  char line[96];
+  std::snprintf(line, sizeof line, "frame %.2f ms (median of %zu)", measure_->medianFrameMs(),
+                frames);
+  return line;
+}
+
 void Runner::drawPanel(Frame& frame) {
-  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(390, static_cast<float>(frame.height) - 16),
+  // Narrow, in the top-left corner, in sections that fold away; folded whole on small
+  // pictures, where it would hide everything.
+  const float width = std::min(300.0f, 0.45f * static_cast<float>(frame.width));
+  ImGui::SetNextWindowPos(ImVec2(6, 6), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(width, static_cast<float>(frame.height) - 12),
                            ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowCollapsed(frame.width < 600, ImGuiCond_FirstUseEver);
   ImGui::Begin(name_.c_str());
+  ImGui::PushItemWidth(-ImGui::GetFontSize() * 8.5f);  // room for the longest labels
   ImGui::TextWrapped("%s", lesson_->title().c_str());
-  ImGui::TextDisabled("%s", lesson_->seeds().c_str());
-  ImGui::Separator();
-  ImGui::Text("frame %.2f ms", measure_->lastFrameMs());
-  // One line per pass ever run and one line of counters, so widgets never jump around.
-  const auto& work = measure_->lastFrameWork();
-  for (const auto& [pass, ms] : measure_->medianPassMs()) {
-    const auto it = work.find(pass);
-    if (it == work.end()) {
-      ImGui::Text("  %-8s skipped this frame", pass.c_str());
-    } else {
-      ImGui::Text("  %-8s %7.2f ms %3lld draws %9lld fragments", pass.c_str(), ms,
-                  it->second.draw_calls, it->second.fragment_invocations);
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", lesson_->seeds().c_str());
+  ImGui::PopStyleColor();
+  params_.drawWidgets([](const Param& p) { return p.name == "view" || p.name == "scene"; });
+  if (ImGui::Button("Screenshot (F12)")) screenshot_requested_ = true;
+
+  const auto shared = [](const Param& p) {
+    return p.name == "view" || p.name == "scene" || p.name.rfind("light.", 0) == 0 ||
+           p.name.rfind("camera.", 0) == 0;
+  };
+  if (ImGui::CollapsingHeader("Technique", ImGuiTreeNodeFlags_DefaultOpen)) {
+    params_.drawWidgets([&](const Param& p) { return !shared(p); });
+    lesson_->panel(frame);
+  }
+  if (ImGui::CollapsingHeader("Light and camera", ImGuiTreeNodeFlags_DefaultOpen)) {
+    params_.drawWidgets([](const Param& p) {
+      return p.name.rfind("light.", 0) == 0 || p.name.rfind("camera.", 0) == 0;
+    });
+  }
+  if (ImGui::CollapsingHeader("Cost", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::TextUnformatted(costSummary().c_str());
+    // One line per pass ever run, so widgets never jump around.
+    const auto& work = measure_->lastFrameWork();
+    for (const auto& [pass, ms] : measure_->medianPassMs()) {
+      const auto it = work.find(pass);
+      if (it == work.end()) {
+        ImGui::Text("  %-8s skipped this frame", pass.c_str());
+      } else {
+        ImGui::Text("  %-8s %6.2f ms %2lld draws", pass.c_str(), ms, it->second.draw_calls);
+        ImGui::TextDisabled("           %lld fragments", it->second.fragment_invocations);
+      }
     }
+    std::string counts;
+    for (const auto& [name, count] : measure_->lastFrameCounts()) {
+      counts += (counts.empty() ? "" : ", ") + name + " " + std::to_string(count);
+    }
+    ImGui::TextWrapped("%s", counts.c_str());
   }
-  std::string counts;
-  for (const auto& [name, count] : measure_->lastFrameCounts()) {
-    counts += (counts.empty() ? "  " : ", ") + name + " " + std::to_string(count);
-  }
-  ImGui::TextUnformatted(counts.c_str());
-  if (options_.truth) {
+  if (options_.truth && ImGui::CollapsingHeader("Error", ImGuiTreeNodeFlags_DefaultOpen)) {
     if (error_.valid) {
       const ErrorMetrics& e = error_.metrics;
-      ImGui::Text("vs truth: false shadow %.3f%%  false lit %.3f%%", e.false_shadow_pct,
-                  e.false_lit_pct);
-      ImGui::Text("  vis_mae %.4f  non-finite %lld%s", e.vis_mae, e.nonfinite_pixels,
-                  error_key_ == errorKey() ? "" : "  (stale: updating)");
+      ImGui::TextWrapped("false shadow %.3f%%  false lit %.3f%%", e.false_shadow_pct,
+                         e.false_lit_pct);
+      ImGui::TextWrapped("vis_mae %.4f  non-finite %lld  counted %lld%s", e.vis_mae,
+                         e.nonfinite_pixels, e.counted_pixels,
+                         error_key_ == errorKey() ? "" : "  (stale: updating)");
+      if (e.counted_pixels == 0) {
+        ImGui::TextWrapped(
+            "No pixel counted: no lit surface faces the eye in the light's "
+            "frustum (is the eye inside an object?)");
+      }
       if (e.air.valid) {
-        ImGui::Text("  air: mae %.4f  rel. RMSE %.1f%%  (truth mean %.3f, noise %.4f)", e.air.mae,
-                    100.0 * e.air.rel_rmse, e.air.truth_mean, e.air.truth_noise);
+        ImGui::TextWrapped("air: mae %.4f  rel. RMSE %.1f%% (truth mean %.3f, noise %.4f)",
+                           e.air.mae, 100.0 * e.air.rel_rmse, e.air.truth_mean, e.air.truth_noise);
       }
     } else {
-      ImGui::TextDisabled("vs truth: not measured yet");
+      ImGui::TextDisabled("not measured yet");
     }
   }
-  if (ImGui::Button("Screenshot (F12)")) screenshot_requested_ = true;
-  ImGui::Separator();
-  params_.drawWidgets();
-  lesson_->panel(frame);
+  ImGui::PopItemWidth();
   ImGui::End();
 }
 
@@ -938,6 +975,9 @@ int Runner::runHeadless() {
   if (options_.panel && options_.truth) measureError();
   measure_->clearHistory();
   for (int i = 0; i < options_.frames; ++i) renderFrame();
+  // The panel shows the run's medians, the numbers the report gives: it is drawn once more,
+  // untimed, after the last timed frame.
+  if (options_.panel) renderFrame(/*timed=*/false);
   const Image image = readImage();
   // Asking for the truth or error picture asks for the truth, --no-truth or not.
   if (options_.truth || !options_.truth_out.empty() || !options_.error_out.empty()) {

@@ -149,8 +149,11 @@ class Runner {
   std::string applySets(const std::vector<std::string>& sets);
   // Headless: creates the context and GL resources. Throws GlFailure.
   void initHeadless();
-  // Renders one frame into the runner's framebuffer (headless) or the window.
-  void renderFrame();
+  // Renders one frame into the runner's framebuffer (headless) or the window; untimed, it
+  // leaves the timings and counters alone.
+  void renderFrame(bool timed = true);
+  // The panel's frame line: the median the report gives ("measuring..." before any frame).
+  std::string costSummary() const;
   // Feeds ImGui a mouse state for the next frame (headless tests drive the panel this way).
   void setMouse(glm::vec2 position, bool leftDown);
   // Computes visibility, truth and metrics for the current parameters.

@@ -52,6 +52,7 @@ class Measure {
   // Drop everything recorded so far (after the warm-up frame).
   void clearHistory();
   double medianFrameMs() const;
+  size_t timedFrames() const { return frame_ms_.size(); }
   std::map<std::string, double> medianPassMs() const;
   const std::map<std::string, PassWork>& lastFrameWork() const { return last_work_; }
   // The work of a pass that already ended in the frame in progress (null if none, or when

@@ -333,9 +333,13 @@ void Params::setDefaultChoice(Param& p, const std::string& choiceName) {
 }
 
 bool Params::drawWidgets(const std::string& prefix) {
+  return drawWidgets([&](const Param& p) { return p.name.rfind(prefix, 0) == 0; });
+}
+
+bool Params::drawWidgets(const std::function<bool(const Param&)>& which) {
   bool any = false;
   for (auto& p : params_) {
-    if (p.name.rfind(prefix, 0) != 0) continue;
+    if (!which(p)) continue;
     bool changed_now = false;
     const ImGuiSliderFlags flags =
         ImGuiSliderFlags_AlwaysClamp | (p.logarithmic ? ImGuiSliderFlags_Logarithmic : 0);

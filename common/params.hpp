@@ -103,6 +103,8 @@ class Params {
   // One ImGui widget per parameter whose name starts with `prefix` ("" = all).
   // Returns true when any changed.
   bool drawWidgets(const std::string& prefix = {});
+  // One widget per parameter `which` accepts.
+  bool drawWidgets(const std::function<bool(const Param&)>& which);
   std::string listText() const;  // --list-params
   void writeJson(JsonWriter& json) const;
 

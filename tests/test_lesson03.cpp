@@ -194,6 +194,22 @@ TEST(Lesson03, ImGuiDragOnTheShadowSizeSliderChangesTheParameterAndThePicture) {
   EXPECT_EQ(runner->glErrors(), 0);
 }
 
+TEST(Lesson03, ThePanelsFrameTimeIsTheReports) {
+  // One source for both: the median of the timed frames (the panel once showed the last
+  // frame's time, and "0.00 ms" with a single frame).
+  auto runner = startLesson(kLesson, {}, 320, 240, /*panel=*/true);
+  runner->renderFrame();
+  runner->measure().clearHistory();
+  EXPECT_EQ(runner->costSummary(), "frame: measuring...");
+  for (int frames = 1; frames <= 3; ++frames) {
+    runner->renderFrame();
+    char expected[64];
+    std::snprintf(expected, sizeof expected, "frame %.2f ms (median of %d)",
+                  reportNumber(*runner, "frame_ms"), frames);
+    EXPECT_EQ(runner->costSummary(), expected);
+  }
+}
+
 TEST(Lesson03, ALightMovedInThePanelRendersExactlyAsTheSameLightSetOnTheCommandLine) {
   // A widget changes the light in the middle of a frame; that frame's shadow map must be
   // built for the new light, not the one the frame started with (a stale map once stayed
@@ -209,8 +225,11 @@ TEST(Lesson03, ALightMovedInThePanelRendersExactlyAsTheSameLightSetOnTheCommandL
   dragged->renderFrame();
   dragged->setMouse({x, y}, true);
   dragged->renderFrame();  // the click sets the value and the frame renders with it
-  dragged->setMouse({x, y}, false);
+  dragged->setMouse({-1, -1}, false);
   ASSERT_NE(dragged->params().at("light.fov").f(), 55.0f) << "the click reached the slider";
+  // One more, static frame with the mouse gone (its tooltip would cover the scene): a map
+  // left stale by the click would stay, the cache renders none.
+  dragged->renderFrame();
   const Image moved = dragged->readImage();
   char value[40];
   std::snprintf(value, sizeof value, "light.fov=%.17g", fov.value[0]);

@@ -233,7 +233,7 @@ TEST(Lesson04, PanelButtonsSetTheSeedsOffsets) {
   runner->setMouse({-1, -1}, false);
   runner->renderFrame();
   runner->renderFrame();  // ImGui places the window on its second frame
-  const Param& last = runner->params().at("camera.fov");  // the last slider above the buttons
+  const Param& last = runner->params().at("bias.clamp");  // the last slider above the buttons
   ASSERT_GT(last.widget_max.y, last.widget_min.y);
   const ImGuiStyle& style = ImGui::GetStyle();
   const float y = last.widget_max.y + style.ItemSpacing.y + 0.5f * ImGui::GetFrameHeight();
