@@ -77,6 +77,16 @@ struct Sweep {
   bool study = false;
 };
 
+// Lessons 06 and 07: the copy paths against map size and the light pass's depth bits.
+Sweep copyCostSweep() {
+  return {.scenes = {"torus_pyramid", "dueling"},
+          .axes = {{"shadow.size", {"256", "512", "1024", "2048"}},
+                   {"map.path", {"read_pixels", "copy_texture", "render_to_texture"}},
+                   {"map.depth_bits", {"24", "16"}}},
+          .fixed = {"shadow.cache=false", "inset=false"},
+          .plot_metrics = {"false_shadow_pct", "false_lit_pct"}};
+}
+
 // One entry per lesson. Adding a lesson's sweep is one entry here, e.g. for 04:
 //   {"04_...", {.scenes = {...}, .axes = {{"bias.units", {...}}, {"bias.factor", {...}}}, ...}}
 const std::map<std::string, Sweep>& sweeps() {
@@ -119,22 +129,10 @@ const std::map<std::string, Sweep>& sweeps() {
                  {"shadow.size", {"1024", "2048"}}},
         .fixed = {"shadow.cache=false", "inset=false", "pcf.count=false"},
         .plot_metrics = {"vis_mae", "false_lit_pct"}}},
-      {"06_dual_texture_8bit",
-       // Seed 000's copy claims, timed as the `readback` pass: "512x512 takes 4 times longer
-       // to copy than 256x256", "16-bit depth values copy twice as fast as 24-bit".
-       {.scenes = {"torus_pyramid", "dueling"},
-        .axes = {{"shadow.size", {"256", "512", "1024", "2048"}},
-                 {"map.path", {"read_pixels", "copy_texture", "render_to_texture"}},
-                 {"map.depth_bits", {"24", "16"}}},
-        .fixed = {"shadow.cache=false", "inset=false"},
-        .plot_metrics = {"false_shadow_pct", "false_lit_pct"}}},
-      {"07_multidigit_16bit",
-       {.scenes = {"torus_pyramid", "dueling"},
-        .axes = {{"shadow.size", {"256", "512", "1024", "2048"}},
-                 {"map.path", {"read_pixels", "copy_texture", "render_to_texture"}},
-                 {"map.depth_bits", {"24", "16"}}},
-        .fixed = {"shadow.cache=false", "inset=false"},
-        .plot_metrics = {"false_shadow_pct", "false_lit_pct"}}},
+      // Seed 000's copy claims, timed as the `readback` pass: "512x512 takes 4 times longer to
+      // copy than 256x256", "16-bit depth values copy twice as fast as 24-bit".
+      {"06_dual_texture_8bit", copyCostSweep()},
+      {"07_multidigit_16bit", copyCostSweep()},
       {"precision_study",
        // Seed 000's claim in numbers: error against the light frustum's far/near ratio, from
        // about the casters' own (6) to "expanded out considerably" (5000) and past it. Every

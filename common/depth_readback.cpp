@@ -1,5 +1,7 @@
 #include "depth_readback.hpp"
 
+#include <imgui.h>
+
 #include <bit>
 
 #include "depth_digits.hpp"
@@ -287,6 +289,14 @@ void DepthReadback::bindForLookup(const Frame& f, const Program& program) const 
   program.set("uShadowMatrix", light_.textureMatrix());
   program.set("uLinearPlane", linearPlane());
   program.set("uTexgenBias", texgenBias(f));
+}
+
+void DepthReadback::panel(const Frame& f) const {
+  const LightFrustum& fr = light_.frustum();
+  ImGui::Text("light near %.3f  far %.3f  (far/near %.1f)", fr.near, fr.far, fr.far / fr.near);
+  if (f.params.at("shadow.fit").b()) {
+    ImGui::TextDisabled("fitted to the casters: light.near/far unused (shadow.fit off)");
+  }
 }
 
 void DepthReadback::drawInset(const Frame& frame, bool fullscreen) const {

@@ -38,6 +38,8 @@ class DepthReadback {
   // to unit 2), and sets what the eye shaders of 06/07 read: uMap, uRamp(Big), uMapIsDepth,
   // uReadbackNearest, uLinear, uShadowMatrix, uLinearPlane, uTexgenBias.
   void bindForLookup(const Frame& frame, const Program& program) const;
+  // The panel's lines on the light's frustum (near, far, their ratio, whether fitted).
+  void panel(const Frame& frame) const;
   // The map over the whole target (view "map") or in a corner, when `inset` is on.
   void drawInset(const Frame& frame, bool fullscreen = false) const;
 

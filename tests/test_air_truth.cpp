@@ -9,20 +9,18 @@
 
 #include "shadow_math.hpp"
 #include "spotlight.hpp"
+#include "test_meshes.hpp"
 #include "truth.hpp"
 
 namespace shadows {
 namespace {
 
+using testing::Mesh;
+
 constexpr double kPi = 3.14159265358979323846;
 const glm::vec3 kLight(0.0f, 10.0f, 0.0f);  // looking straight down
 const glm::vec3 kEye(-10.0f, 5.0f, 0.0f);   // looking along +x, 5 below the light
 constexpr float kDensity = 0.1f;
-
-struct Mesh {
-  std::vector<glm::vec3> positions;
-  std::vector<glm::uvec3> triangles;
-};
 
 void addFloor(Mesh& m) {  // far below, never on the eye ray
   const auto base = static_cast<unsigned>(m.positions.size());
@@ -33,24 +31,7 @@ void addFloor(Mesh& m) {  // far below, never on the eye ray
 }
 
 void addSphere(Mesh& m, glm::vec3 c, float r) {
-  const int segments = 256, rings = 128;
-  const auto base = static_cast<unsigned>(m.positions.size());
-  for (int j = 0; j <= rings; ++j) {
-    const double theta = kPi * j / rings;
-    for (int i = 0; i <= segments; ++i) {
-      const double phi = 2.0 * kPi * i / segments;
-      m.positions.push_back(c + r * glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta),
-                                              std::sin(theta) * std::sin(phi)));
-    }
-  }
-  const auto row = static_cast<unsigned>(segments + 1);
-  for (unsigned j = 0; j < static_cast<unsigned>(rings); ++j) {
-    for (unsigned i = 0; i < static_cast<unsigned>(segments); ++i) {
-      const unsigned a = base + j * row + i, b = a + 1, d = a + row, e = d + 1;
-      if (j != 0) m.triangles.emplace_back(a, b, d);
-      if (j + 1 != static_cast<unsigned>(rings)) m.triangles.emplace_back(b, e, d);
-    }
-  }
+  testing::addSphere(m, c, r, 256, 128);
 }
 
 // A 60-degree spot frustum, far plane 20.
