@@ -1,0 +1,164 @@
+// What a lesson draws with: Frame and the runner's draw helpers behind it.
+#include "app.hpp"
+
+#include "runner_gpu.hpp"
+
+#include "context.hpp"
+#include "json.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <map>
+
+namespace shadows {
+
+// ---------------------------------------------------------------- Frame helpers
+
+void Frame::bindTarget() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, target);
+  glViewport(0, 0, width, height);
+}
+
+void Frame::clearTarget(glm::vec3 color) const {
+  bindTarget();
+  glClearColor(color.r, color.g, color.b, 1.0f);
+  glClearStencil(0);
+  glStencilMask(0xFF);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+}
+
+void Frame::drawObjects(const Program& program, Objects which, const glm::mat4* cull) const {
+  runner.drawObjects(*this, program, which, cull);
+}
+
+void Frame::setLightingUniforms(const Program& program, float dimming) const {
+  program.set("uLightPos", light.position);
+  program.set("uLightDir", light.direction);
+  program.set("uLightDirectional", light.directional ? 1 : 0);
+  program.set("uEye", eye);
+  program.set("uDimming", dimming);
+}
+
+void Frame::drawDepthInset(const Texture& depth, float near, float far, bool perspective,
+                           bool fullscreen) const {
+  runner.drawInset(*this, depth, near, far, perspective, fullscreen);
+}
+
+void Frame::drawObject(const Program& program, size_t index) const {
+  program.use();
+  runner.drawObject(program, index);
+}
+
+void Frame::drawImageInset(const Texture& image, bool fullscreen) const {
+  runner.drawImageInset(*this, image, fullscreen);
+}
+
+void Frame::drawFullscreen(const Program& program, bool inset) const {
+  runner.drawFullscreen(*this, program, inset);
+}
+
+void Runner::drawFullscreen(const Frame& frame, const Program& program, bool inset) const {
+  frame.bindTarget();
+  const int side = std::max(16, std::min(frame.width, frame.height) / 4);
+  if (inset) glViewport(frame.width - side - 8, 8, side, side);
+  glDisable(GL_DEPTH_TEST);
+  program.use();
+  glBindVertexArray(gpu_->empty_vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  countDrawCall();
+  glEnable(GL_DEPTH_TEST);
+  frame.bindTarget();
+}
+
+void Runner::drawImageInset(const Frame& frame, const Texture& image, bool fullscreen) const {
+  const int side = std::max(16, std::min(frame.width, frame.height) / 4);
+  const int wide = std::max(1, side * image.width() / std::max(image.height(), 1));
+  frame.bindTarget();
+  if (!fullscreen) glViewport(frame.width - wide - 8, 8, wide, side);
+  glDisable(GL_DEPTH_TEST);
+  image.bind(0);
+  gpu_->image.use();
+  gpu_->image.set("uImage", 0);
+  glBindVertexArray(gpu_->empty_vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  countDrawCall();
+  glEnable(GL_DEPTH_TEST);
+  frame.bindTarget();
+}
+
+void Runner::drawObjects(const Frame& frame, const Program& program, Objects which,
+                         const glm::mat4* cull) const {
+  program.use();
+  for (size_t i = 0; i < scene_.objects.size(); ++i) {
+    const SceneObject& object = scene_.objects[i];
+    const Light& l = frame.light;
+    if (which == Objects::Casters && !object.castsFrom(l.position, l.directional, l.direction)) {
+      continue;
+    }
+    if (which == Objects::Receivers && !object.receiver) continue;
+    if (cull != nullptr) {
+      const Bounds b = object.worldBounds();
+      if (sphereOutsideFrustum(*cull, b.center(), b.radius())) {
+        frame.measure.count("culled_objects");
+        continue;
+      }
+    }
+    drawObject(program, i);
+  }
+}
+
+void Runner::drawObject(const Program& program, size_t index) const {
+  const SceneObject& object = scene_.objects.at(index);
+  program.set("uModel", object.model);
+  program.set("uNormalMatrix", glm::transpose(glm::inverse(object.model)));
+  program.set("uColor", object.color);
+  program.set("uObject", static_cast<int>(index));
+  gpu_->meshes[index].draw();
+}
+
+void Runner::setObjectModel(size_t index, const glm::mat4& model) {
+  SceneObject& object = scene_.objects.at(index);
+  if (object.model == model) return;
+  object.model = model;
+  truth_.reset();  // the truth's triangles are in world space
+  error_.valid = false;
+  params_.markDirty(kDirtyShadowMap);  // a moved caster moves its shadow
+}
+
+void Runner::drawInset(const Frame& frame, const Texture& depth, float near, float far,
+                       bool perspective, bool fullscreen) const {
+  const int side = std::max(16, std::min(frame.width, frame.height) / 4);
+  frame.bindTarget();
+  if (!fullscreen) glViewport(frame.width - side - 8, 8, side, side);
+  glDisable(GL_DEPTH_TEST);
+  // The lesson samples this texture with a compare; a plain read needs the compare off.
+  GLint compare_mode = GL_NONE;
+  glBindTexture(GL_TEXTURE_2D, depth.id());
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, &compare_mode);
+  depth.setCompare(false);
+  depth.bind(0);
+  gpu_->depth_inset.use();
+  gpu_->depth_inset.set("uDepth", 0);
+  gpu_->depth_inset.set("uNear", near);
+  gpu_->depth_inset.set("uFar", far);
+  gpu_->depth_inset.set("uPerspective", perspective ? 1 : 0);
+  glBindVertexArray(gpu_->empty_vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  countDrawCall();
+  depth.setCompare(compare_mode == GL_COMPARE_REF_TO_TEXTURE);
+  glEnable(GL_DEPTH_TEST);
+  frame.bindTarget();
+}
+
+}  // namespace shadows

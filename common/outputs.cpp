@@ -1,0 +1,163 @@
+// Running headless, the report, and every output of a run, all or nothing.
+#include "app.hpp"
+
+#include "runner_gpu.hpp"
+
+#include "context.hpp"
+#include "json.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <map>
+
+namespace shadows {
+
+void Runner::writeReport(JsonWriter& json) {
+  json.beginObject();
+  json.value("lesson", name_);
+  json.value("renderer", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+  json.value("backend", window_ ? std::string("window") : HeadlessContext::current());
+  json.beginArray("size");
+  json.value("", options_.width);
+  json.value("", options_.height);
+  json.endArray();
+  json.value("frames", options_.frames);
+  params_.writeJson(json);
+  json.value("frame_ms", measure_->medianFrameMs());
+  json.beginObject("pass_ms");
+  for (const auto& [pass, ms] : measure_->medianPassMs()) json.value(pass, ms);
+  json.endObject();
+  json.beginObject("counters");
+  for (const auto& [pass, work] : measure_->lastFrameWork()) {
+    json.beginObject(pass);
+    json.value("draw_calls", work.draw_calls);
+    json.value("fragment_invocations", work.fragment_invocations);
+    json.endObject();
+  }
+  for (const auto& [name, count] : measure_->lastFrameCounts()) json.value(name, count);
+  json.endObject();
+  json.value("gl_errors", glErrors());
+  lesson_->report(json);
+  if (error_.valid) {
+    const ErrorMetrics& e = error_.metrics;
+    json.beginObject("error");
+    json.value("truth", e.truth);
+    json.value("false_shadow_pct", e.false_shadow_pct);
+    json.value("false_lit_pct", e.false_lit_pct);
+    json.value("vis_mae", e.vis_mae);
+    json.value("shade_mae", e.shade_mae);
+    json.value("nonfinite_pixels", e.nonfinite_pixels);
+    json.value("counted_pixels", e.counted_pixels);
+    if (e.air.valid) {
+      json.value("air_mae", e.air.mae);
+      json.value("air_rel_rmse", e.air.rel_rmse);
+      json.value("air_truth_mean", e.air.truth_mean);
+      json.value("air_truth_noise", e.air.truth_noise);
+      json.value("air_pixels", e.air.pixels);
+    }
+    json.endObject();
+  }
+  json.endObject();
+}
+
+void Runner::saveScreenshot(int width, int height, const std::string& file) {
+  Image image{width, height, std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 4)};
+  glBindFramebuffer(GL_FRAMEBUFFER, window_ ? 0 : gpu_->target->id());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  const std::string path =
+      file.empty() ? name_ + "_screenshot_" + std::to_string(++screenshots_taken_) + ".png" : file;
+  if (writePng(path, image)) {
+    std::printf("screenshot: %s\n", path.c_str());
+  } else {
+    std::fprintf(stderr, "screenshot: cannot write %s\n", path.c_str());
+  }
+}
+
+int Runner::run() {
+  const char* display = std::getenv("DISPLAY");
+  const bool has_display = display != nullptr && *display != '\0';
+  if (options_.headless || (!has_display && !options_.force_window)) {
+    if (!options_.headless) std::printf("%s: no display, rendering headless\n", name_.c_str());
+    return runHeadless();
+  }
+  const int result = runWindow();
+  if (result != kNoWindow) return result;
+  if (options_.force_window) return 1;
+  // A DISPLAY that leads nowhere (a closed ssh tunnel, a stale variable): say so, go on.
+  std::printf("%s: cannot open a window on DISPLAY=%s, rendering headless\n", name_.c_str(),
+              has_display ? display : "");
+  return runHeadless();
+}
+
+int Runner::runHeadless() {
+  initHeadless();
+  // Without --out the picture goes where ./run.sh puts them, out/<lesson>.png (git-ignored).
+  std::string out = options_.out;
+  if (out.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories("out", ec);
+    out = "out/" + name_ + ".png";
+  }
+  renderFrame();  // warm-up: shader JIT and the first shadow map land here
+  // A snapshot with the panel should show the error numbers, so measure them first.
+  if (options_.panel && options_.truth) measureError();
+  measure_->clearHistory();
+  for (int i = 0; i < options_.frames; ++i) renderFrame();
+  // The panel shows the run's medians, the numbers the report gives: it is drawn once more,
+  // untimed, after the last timed frame.
+  if (options_.panel) renderFrame(/*timed=*/false);
+  const Image image = readImage();
+  // Asking for the truth or error picture asks for the truth, --no-truth or not.
+  if (options_.truth || !options_.truth_out.empty() || !options_.error_out.empty()) {
+    measureError();
+  }
+  if (!writeOutputs(out, image)) return 1;
+  const int errors = glErrors();
+  std::printf("%-30s %dx%d  frame %7.2f ms", out.c_str(), options_.width, options_.height,
+              measure_->medianFrameMs());
+  const auto& counts = measure_->lastFrameCounts();
+  if (const auto it = counts.find("shadow_map_renders"); it != counts.end() && it->second == 0) {
+    std::printf(" (map cached)");
+  }
+  if (error_.valid) {
+    std::printf("  false shadow %6.2f%%  false lit %5.2f%%", error_.metrics.false_shadow_pct,
+                error_.metrics.false_lit_pct);
+  }
+  std::printf("  gl_errors %d\n", errors);
+  if (errors > 0) {
+    std::fprintf(stderr, "%s: %d GL error(s), last: %s\n", name_.c_str(), errors,
+                 GlErrorLog::last().c_str());
+    return 1;
+  }
+  return 0;
+}
+
+bool Runner::writeOutputs(const std::string& out, const Image& image) {
+  // Every output of the run, or none: a picture without its report is a half answer.
+  OutputBatch batch;
+  if (!out.empty()) batch.add(out, encodePng(image));
+  if (!options_.truth_out.empty()) batch.add(options_.truth_out, encodePng(truth_image_));
+  if (!options_.error_out.empty()) batch.add(options_.error_out, encodePng(error_image_));
+  if (!options_.report.empty()) {
+    JsonWriter json;
+    writeReport(json);
+    batch.add(options_.report, json.str() + "\n");
+  }
+  if (batch.commit()) return true;
+  std::fprintf(stderr, "%s: %s\n", name_.c_str(), batch.failure().c_str());
+  return false;
+}
+
+}  // namespace shadows

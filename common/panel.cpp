@@ -1,0 +1,110 @@
+// The ImGui panel: the lesson's sliders, cost and error, in foldable sections.
+#include "app.hpp"
+
+#include "runner_gpu.hpp"
+
+#include "context.hpp"
+#include "json.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <map>
+
+namespace shadows {
+
+std::string Runner::costSummary() const {
+  // The report's numbers (median of the timed frames so far), so panel and report agree.
+  const size_t frames = measure_->timedFrames();
+  if (frames == 0) return "frame: measuring...";
+  char line[96];
+  std::snprintf(line, sizeof line, "frame %.2f ms (median of %zu)", measure_->medianFrameMs(),
+                frames);
+  return line;
+}
+
+void Runner::drawPanel(Frame& frame) {
+  // Narrow, in the top-left corner, in sections that fold away; folded whole on small
+  // pictures, where it would hide everything.
+  const float width = std::min(300.0f, 0.45f * static_cast<float>(frame.width));
+  ImGui::SetNextWindowPos(ImVec2(6, 6), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(width, static_cast<float>(frame.height) - 12),
+                           ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowCollapsed(frame.width < 600, ImGuiCond_FirstUseEver);
+  ImGui::Begin(name_.c_str());
+  ImGui::PushItemWidth(-ImGui::GetFontSize() * 8.5f);  // room for the longest labels
+  ImGui::TextWrapped("%s", lesson_->title().c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", lesson_->seeds().c_str());
+  ImGui::PopStyleColor();
+  params_.drawWidgets([](const Param& p) { return p.name == "view" || p.name == "scene"; });
+  if (ImGui::Button("Screenshot (F12)")) screenshot_requested_ = true;
+
+  const auto shared = [](const Param& p) {
+    return p.name == "view" || p.name == "scene" || p.name.rfind("light.", 0) == 0 ||
+           p.name.rfind("camera.", 0) == 0;
+  };
+  if (ImGui::CollapsingHeader("Technique", ImGuiTreeNodeFlags_DefaultOpen)) {
+    params_.drawWidgets([&](const Param& p) { return !shared(p); });
+    lesson_->panel(frame);
+  }
+  if (ImGui::CollapsingHeader("Light and camera", ImGuiTreeNodeFlags_DefaultOpen)) {
+    params_.drawWidgets([](const Param& p) {
+      return p.name.rfind("light.", 0) == 0 || p.name.rfind("camera.", 0) == 0;
+    });
+  }
+  if (ImGui::CollapsingHeader("Cost", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::TextUnformatted(costSummary().c_str());
+    // One line per pass ever run, so widgets never jump around.
+    const auto& work = measure_->lastFrameWork();
+    for (const auto& [pass, ms] : measure_->medianPassMs()) {
+      const auto it = work.find(pass);
+      if (it == work.end()) {
+        ImGui::Text("  %-8s skipped this frame", pass.c_str());
+      } else {
+        ImGui::Text("  %-8s %6.2f ms %2lld draws", pass.c_str(), ms, it->second.draw_calls);
+        ImGui::TextDisabled("           %lld fragments", it->second.fragment_invocations);
+      }
+    }
+    std::string counts;
+    for (const auto& [name, count] : measure_->lastFrameCounts()) {
+      counts += (counts.empty() ? "" : ", ") + name + " " + std::to_string(count);
+    }
+    ImGui::TextWrapped("%s", counts.c_str());
+  }
+  if (options_.truth && ImGui::CollapsingHeader("Error", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (error_.valid) {
+      const ErrorMetrics& e = error_.metrics;
+      ImGui::TextWrapped("false shadow %.3f%%  false lit %.3f%%", e.false_shadow_pct,
+                         e.false_lit_pct);
+      ImGui::TextWrapped("vis_mae %.4f  non-finite %lld  counted %lld%s", e.vis_mae,
+                         e.nonfinite_pixels, e.counted_pixels,
+                         error_key_ == errorKey() ? "" : "  (stale: updating)");
+      if (e.counted_pixels == 0) {
+        ImGui::TextWrapped(
+            "No pixel counted: no lit surface faces the eye in the light's "
+            "frustum (is the eye inside an object?)");
+      }
+      if (e.air.valid) {
+        ImGui::TextWrapped("air: mae %.4f  rel. RMSE %.1f%% (truth mean %.3f, noise %.4f)",
+                           e.air.mae, 100.0 * e.air.rel_rmse, e.air.truth_mean, e.air.truth_noise);
+      }
+    } else {
+      ImGui::TextDisabled("not measured yet");
+    }
+  }
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+}  // namespace shadows

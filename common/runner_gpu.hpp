@@ -1,0 +1,74 @@
+// The runner's own GL state (targets, programs, the context, ImGui), shared by the files that
+// implement Runner. Private to common/.
+#pragma once
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <memory>
+#include <vector>
+
+#include "app.hpp"
+#include "context.hpp"
+
+struct GLFWwindow;
+
+namespace shadows {
+
+struct Runner::Gpu {
+  // First member, so it is destroyed last: every GL object below needs it to be deleted.
+  std::unique_ptr<HeadlessContext> context;
+  std::vector<Mesh> meshes;
+  // Headless target: what the lesson draws into and the PNG is read from.
+  Texture target_color, target_depth;
+  std::unique_ptr<Framebuffer> target;
+  // Float targets for the truth: surface (position, normal) and the lesson's visibility.
+  Texture surface_position, surface_normal, surface_depth;
+  std::unique_ptr<Framebuffer> surface;
+  Texture float_color, float_depth;
+  std::unique_ptr<Framebuffer> float_target;
+  int size_w = 0, size_h = 0;
+  Program gbuffer, image, depth_inset;
+  Texture shown;  // the error or truth image, uploaded for display
+  GLuint empty_vao = 0;
+  bool imgui = false;
+  bool imgui_glfw = false;
+  GLFWwindow* window = nullptr;
+
+  ~Gpu() {
+    if (imgui) {
+      ImGui_ImplOpenGL3_Shutdown();
+      if (imgui_glfw) ImGui_ImplGlfw_Shutdown();
+      ImGui::DestroyContext();
+    }
+    if (empty_vao != 0) glDeleteVertexArrays(1, &empty_vao);
+  }
+
+  void ensureTargets(int w, int h) {
+    if (w == size_w && h == size_h) return;
+    size_w = w, size_h = h;
+    target_color = Texture::color(w, h, GL_RGBA8);
+    target_depth = Texture::depthStencil(w, h);
+    target = std::make_unique<Framebuffer>();
+    target->attachColor(target_color);
+    target->attachDepthStencil(target_depth);
+    target->check();
+    surface_position = Texture::color(w, h, GL_RGBA32F);
+    surface_normal = Texture::color(w, h, GL_RGBA32F);
+    surface_depth = Texture::depthStencil(w, h);
+    surface = std::make_unique<Framebuffer>();
+    surface->attachColor(surface_position, 0);
+    surface->attachColor(surface_normal, 1);
+    surface->attachDepthStencil(surface_depth);
+    surface->check();
+    float_color = Texture::color(w, h, GL_RGBA32F);
+    float_depth = Texture::depthStencil(w, h);
+    float_target = std::make_unique<Framebuffer>();
+    float_target->attachColor(float_color);
+    float_target->attachDepthStencil(float_depth);
+    float_target->check();
+  }
+};
+
+}  // namespace shadows

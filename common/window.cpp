@@ -1,0 +1,135 @@
+// The window loop: GLFW, ImGui, the orbit camera, the truth when the sliders rest.
+#include "app.hpp"
+
+#include "runner_gpu.hpp"
+
+#include "context.hpp"
+#include "json.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <map>
+
+namespace shadows {
+
+int Runner::runWindow() {
+  glfwSetErrorCallback(
+      [](int, const char* description) { std::fprintf(stderr, "GLFW: %s\n", description); });
+  if (!glfwInit()) return kNoWindow;
+  window_ = true;
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_STENCIL_BITS, 8);
+  GLFWwindow* window = glfwCreateWindow(
+      options_.width, options_.height, (name_ + ": " + lesson_->title()).c_str(), nullptr, nullptr);
+  if (window == nullptr) {
+    std::fprintf(stderr, "%s: cannot open a 4.5 core window\n", name_.c_str());
+    glfwTerminate();
+    window_ = false;
+    return kNoWindow;
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(1);
+  if (gladLoadGL(glfwGetProcAddress) == 0) throw GlFailure("glad could not load GL");
+  gpu_ = std::make_unique<Gpu>();
+  gpu_->window = window;
+  initGl();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+  gpu_->imgui = gpu_->imgui_glfw = true;
+
+  double last_x = 0, last_y = 0;
+  bool dragging = false;
+  auto changed_at = std::chrono::steady_clock::now();
+  std::string last_key;
+  // With --out, a windowed run renders --frames frames, saves the window and exits: that is
+  // how the tests check the real window path under xvfb.
+  int frames_left = options_.out.empty() ? -1 : options_.frames + 1;
+  bool outputs_failed = false;
+  while (!glfwWindowShouldClose(window) && frames_left != 0) {
+    glfwPollEvents();
+    const ImGuiIO& io = ImGui::GetIO();
+    // Orbit the eye around its target with the left mouse button, zoom with the wheel.
+    double x = 0, y = 0;
+    glfwGetCursorPos(window, &x, &y);
+    const bool down = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    if (down && !io.WantCaptureMouse) {
+      if (dragging) {
+        Param& pos = params_.at("camera.pos");
+        const glm::vec3 target = params_.at("camera.target").v();
+        glm::vec3 offset = pos.v() - target;
+        const float radius = glm::length(offset);
+        float yaw = std::atan2(offset.x, offset.z) - 0.01f * static_cast<float>(x - last_x);
+        float pitch = std::asin(std::clamp(offset.y / std::max(radius, 1e-6f), -1.0f, 1.0f)) +
+                      0.01f * static_cast<float>(y - last_y);
+        pitch = std::clamp(pitch, -1.5f, 1.5f);
+        offset = radius * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
+                                    std::cos(pitch) * std::cos(yaw));
+        params_.setVec3(pos, target + offset);
+      }
+      dragging = true;
+    } else {
+      dragging = false;
+    }
+    last_x = x, last_y = y;
+    if (io.MouseWheel != 0.0f && !io.WantCaptureMouse) {
+      Param& pos = params_.at("camera.pos");
+      const glm::vec3 target = params_.at("camera.target").v();
+      params_.setVec3(pos, target + (pos.v() - target) * std::pow(0.9f, io.MouseWheel));
+    }
+    if (glfwGetKey(window, GLFW_KEY_F12) == GLFW_PRESS) screenshot_requested_ = true;
+
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window, &w, &h);
+    if (w > 0 && h > 0) {
+      options_.width = w, options_.height = h;
+      gpu_->ensureTargets(w, h);
+      // The truth is re-measured once the sliders rest (it costs a few hundred ms).
+      const std::string key = errorKey();
+      if (key != last_key) changed_at = std::chrono::steady_clock::now(), last_key = key;
+      const bool resting =
+          std::chrono::steady_clock::now() - changed_at > std::chrono::milliseconds(300);
+      if (options_.truth && resting && key != error_key_ && !ImGui::IsAnyItemActive()) {
+        measureError();
+      }
+      renderInto(0, w, h, params_.at("view").choice(), true, true);
+      GlErrorLog::poll();
+      if (screenshot_requested_) {
+        screenshot_requested_ = false;
+        saveScreenshot(w, h, {});
+      }
+      if (frames_left > 0 && --frames_left == 0) {
+        // The same outputs as a headless run: the picture, and the report, truth and error
+        // pictures asked for, all or none.
+        Image image{w, h, std::vector<std::uint8_t>(static_cast<size_t>(w) * h * 4)};
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+        if (options_.truth || !options_.truth_out.empty() || !options_.error_out.empty()) {
+          measureError();
+        }
+        outputs_failed = !writeOutputs(options_.out, image);
+      }
+    }
+    glfwSwapBuffers(window);
+  }
+  releaseGl();
+  glfwDestroyWindow(window);
+  return GlErrorLog::count() > 0 || outputs_failed ? 1 : 0;
+}
+
+}  // namespace shadows
