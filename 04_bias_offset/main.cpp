@@ -69,24 +69,21 @@ class BiasOffset final : public Lesson {
     if (map_.prepare(f)) {
       auto timing = f.measure.pass("shadow");
       map_.beginRender();
-      // Window-space offsets, applied by the rasterizer to every depth it writes (000).
-      if (mode == "constant_only" || mode == "polygon_offset" || mode == "normal_offset" ||
-          mode == "back_faces") {
-        glEnable(GL_POLYGON_OFFSET_FILL);
-        const bool slope = mode == "polygon_offset" || mode == "back_faces";
-        glPolygonOffset(slope ? factor : 0.0f, units);
-      }
+      PassState state;
       if (mode == "back_faces") {  // 003 slide 70: the far side of each caster goes in the map
-        glEnable(GL_CULL_FACE);
-        glCullFace(GL_FRONT);
+        state = ShadowMap::backFacesBias(factor, units);
+      } else if (mode == "constant_only" || mode == "polygon_offset" || mode == "normal_offset") {
+        // Window-space offsets, applied by the rasterizer to every depth it writes (000).
+        state.polygon_offset = true;
+        state.offset_factor = mode == "polygon_offset" ? factor : 0.0f;
+        state.offset_units = units;
       }
+      state.apply();
       depth_program_.set("uClipOffset", mode == "clip_translate" ? clipOffset(f, units) : 0.0f);
       const glm::mat4 light_view_projection = map_.lightViewProjection();
       depth_program_.set("uLightViewProjection", light_view_projection);
       f.drawObjects(depth_program_, Objects::Casters, &light_view_projection);
-      glDisable(GL_POLYGON_OFFSET_FILL);
-      glDisable(GL_CULL_FACE);
-      glCullFace(GL_BACK);
+      PassState{}.apply();
     }
     if (map_.drawDepthView(f)) return;
 

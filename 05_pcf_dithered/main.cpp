@@ -59,27 +59,18 @@ class PcfDithered final : public Lesson {
     // Two compare samplers for the same map: nearest (one texel per tap), linear (hw2x2).
     nearest_ = Sampler::depth(/*compare=*/true, GL_NEAREST);
     linear_ = Sampler::depth(/*compare=*/true, GL_LINEAR);
-    GLuint buffer = 0;
-    glGenBuffers(1, &buffer);
-    counters_ = GlName<deleteBuffer>(buffer);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(counts_), nullptr, GL_DYNAMIC_READ);
+    counters_ = Buffer(GL_SHADER_STORAGE_BUFFER, sizeof(counts_), nullptr, GL_DYNAMIC_READ);
   }
   void render(Frame& f) override {
     Params& p = f.params;
     if (map_.prepare(f)) {  // lesson 04's default bias
       auto timing = f.measure.pass("shadow");
       map_.beginRender();
-      glEnable(GL_CULL_FACE);
-      glCullFace(GL_FRONT);
-      glEnable(GL_POLYGON_OFFSET_FILL);
-      glPolygonOffset(p.at("bias.factor").f(), p.at("bias.units").f());
+      ShadowMap::backFacesBias(p.at("bias.factor").f(), p.at("bias.units").f()).apply();
       const glm::mat4 light_view_projection = map_.lightViewProjection();
       depth_program_.set("uLightViewProjection", light_view_projection);
       f.drawObjects(depth_program_, Objects::Casters, &light_view_projection);
-      glDisable(GL_POLYGON_OFFSET_FILL);
-      glDisable(GL_CULL_FACE);
-      glCullFace(GL_BACK);
+      PassState{}.apply();
     }
     const std::string mode = p.at("pcf.mode").choice();
     const float radius = p.at("pcf.radius").f();
@@ -94,7 +85,7 @@ class PcfDithered final : public Lesson {
 
     const bool counting = p.at("pcf.count").b() && f.measure.enabled();
     const GLuint zero[4] = {0, 0, 0, 0};
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counters_.id());
+    counters_.bindBase(0);
     glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(zero), zero);
     {
       auto timing = f.measure.pass("eye");
@@ -203,7 +194,7 @@ class PcfDithered final : public Lesson {
   ShadowMap map_;
   Program depth_program_, eye_program_;
   Sampler nearest_, linear_;
-  GlName<deleteBuffer> counters_;
+  Buffer counters_;
   GLuint counts_[4] = {0, 0, 0, 0};  // taps, filtered, stopped early, facing away
   float kernel_texels_ = 0, area_radius_ = 0, d_occluder_ = 0, d_receiver_ = 0, texel_world_ = 0;
 };

@@ -72,13 +72,7 @@ class Atmospherics final : public Lesson {
     if (map_.prepare(f)) {
       auto timing = f.measure.pass("shadow");
       map_.beginRender();
-      PassState state;
-      state.cull = true;
-      state.cull_face = GL_FRONT;
-      state.polygon_offset = true;
-      state.offset_factor = 1.1f;
-      state.offset_units = 4.0f;
-      state.apply();
+      ShadowMap::backFacesBias(1.1f, 4.0f).apply();
       const glm::mat4 light_view_projection = map_.lightViewProjection();
       depth_.set("uLightViewProjection", light_view_projection);
       f.drawObjects(depth_, Objects::Casters, &light_view_projection);

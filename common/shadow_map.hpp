@@ -16,6 +16,17 @@ class ShadowMap {
   // must be rendered this frame (counted as shadow_map_renders). Any `extraDirty` bits a
   // lesson's own parameters set (bias, say) also force a render.
   bool prepare(Frame& frame, std::uint32_t extraDirty = kDirtyNothing);
+  // Lesson 04's default bias, which 05 and 08 use too: only back faces into the map (seed 003,
+  // slide 70), plus glPolygonOffset(factor, units).
+  static PassState backFacesBias(float factor, float units) {
+    PassState state;
+    state.cull = true;
+    state.cull_face = GL_FRONT;
+    state.polygon_offset = true;
+    state.offset_factor = factor;
+    state.offset_units = units;
+    return state;
+  }
   // Binds the map's framebuffer, sets the viewport and clears the depth.
   void beginRender() const;
   // Kilgard's "depth buffer from the light's point of view": when frame.mode is
