@@ -59,6 +59,14 @@ inline double meanAbsDifference(const Image& a, const Image& b) {
   return sum / static_cast<double>(a.rgba.size());
 }
 
+// How many values of two same-size buffers (visibility images, say) differ at all.
+inline size_t valuesDiffering(const std::vector<float>& a, const std::vector<float>& b) {
+  if (a.size() != b.size()) return std::max(a.size(), b.size());
+  size_t differing = 0;
+  for (size_t i = 0; i < a.size(); ++i) differing += a[i] != b[i];
+  return differing;
+}
+
 // "a=1 b=2 " for failure messages.
 inline std::string label(const std::vector<std::string>& sets) {
   std::string text;

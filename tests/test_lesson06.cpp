@@ -85,9 +85,7 @@ TEST(Lesson06, EveryCopyPathSeesTheSameEightBits) {
         reference = visibility;
         continue;
       }
-      size_t differing = 0;
-      for (size_t i = 0; i < visibility.size(); ++i) differing += visibility[i] != reference[i];
-      EXPECT_EQ(differing, 0u) << label(sets);
+      EXPECT_EQ(testing::valuesDiffering(visibility, reference), 0u) << label(sets);
     }
   }
 }
@@ -176,8 +174,7 @@ TEST(Lesson06, PassTwoLightsOnlyWhatTheAlphaTestPasses) {
 
 TEST(Lesson06, EveryInputOfTheMapRendersItAgainAndTheCachedFrameMatchesAnUncachedOne) {
   std::vector<std::string> inputs = testing::readbackMapInputs();
-  const std::vector<std::string> own = {"map.encoding=linear"};
-  inputs.insert(inputs.end(), own.begin(), own.end());
+  inputs.push_back("map.encoding=linear");
   testing::expectEveryMapInputRendersTheMapAgain(kLesson, inputs);
   testing::expectACasterMoveRendersTheMapAgain(kLesson);
 }

@@ -115,17 +115,13 @@ TEST(Lesson07, EveryCopyPathSeesTheSameSixteenBitsButForOneUlp) {
       reference = visibility;
       continue;
     }
-    size_t differing = 0;
-    for (size_t i = 0; i < visibility.size(); ++i) differing += visibility[i] != reference[i];
-    EXPECT_LE(differing, visibility.size() / 20000) << label(sets);
+    EXPECT_LE(testing::valuesDiffering(visibility, reference), visibility.size() / 20000)
+        << label(sets);
   }
 }
 
 TEST(Lesson07, EveryInputOfTheMapRendersItAgainAndTheCachedFrameMatchesAnUncachedOne) {
-  std::vector<std::string> inputs = testing::readbackMapInputs();
-  const std::vector<std::string> own = {};
-  inputs.insert(inputs.end(), own.begin(), own.end());
-  testing::expectEveryMapInputRendersTheMapAgain(kLesson, inputs);
+  testing::expectEveryMapInputRendersTheMapAgain(kLesson, testing::readbackMapInputs());
   testing::expectACasterMoveRendersTheMapAgain(kLesson);
 }
 
