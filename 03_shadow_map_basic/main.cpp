@@ -37,6 +37,9 @@ class ShadowMapBasic final : public Lesson {
         Program(lessonFile(LESSON_DIR, "depth.vert"), lessonFile(LESSON_DIR, "depth.frag"));
     eye_program_ =
         Program(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
+    // shadow.off, the baseline: the same shader with no shadow lookup compiled in.
+    baseline_program_ = Program(lessonFile(LESSON_DIR, "scene.vert"),
+                                lessonFile(LESSON_DIR, "scene.frag"), {"NO_SHADOW"});
     raw_sampler_ = Sampler::depth(/*compare=*/false);
   }
 
@@ -60,18 +63,18 @@ class ShadowMapBasic final : public Lesson {
     map_.texture().bind(1);  // the same texture read raw, for the debug views
     raw_sampler_.bind(1);
     const bool from_light = f.mode == "light_view";
-    eye_program_.set("uViewProjection",
-                     from_light ? map_.lightViewProjection() : f.projection * f.view);
-    eye_program_.set("uShadowMatrix", biasMatrix() * map_.lightProjection() * map_.lightView());
-    eye_program_.set("uShadowMap", 0);
-    eye_program_.set("uShadowDepth", 1);
-    eye_program_.set("uMode", modeIndex(f.mode));
-    eye_program_.set("uLightNear", map_.frustum().near);
-    eye_program_.set("uLightFar", map_.frustum().far);
-    eye_program_.set("uLightPerspective", map_.frustum().directional ? 0 : 1);
-    f.setLightingUniforms(eye_program_, f.params.at("dimming").f());
-    if (from_light) eye_program_.set("uEye", f.light.position);
-    f.drawObjects(eye_program_, Objects::All);
+    const Program& e = map_.off() ? baseline_program_ : eye_program_;
+    e.set("uViewProjection", from_light ? map_.lightViewProjection() : f.projection * f.view);
+    e.set("uShadowMatrix", biasMatrix() * map_.lightProjection() * map_.lightView());
+    e.set("uShadowMap", 0);
+    e.set("uShadowDepth", 1);
+    e.set("uMode", modeIndex(f.mode));
+    e.set("uLightNear", map_.frustum().near);
+    e.set("uLightFar", map_.frustum().far);
+    e.set("uLightPerspective", map_.frustum().directional ? 0 : 1);
+    f.setLightingUniforms(e, f.params.at("dimming").f());
+    if (from_light) e.set("uEye", f.light.position);
+    f.drawObjects(e, Objects::All);
     Sampler::unbind(1);
     if (f.mode != "visibility") map_.drawInset(f);
   }
@@ -96,7 +99,7 @@ class ShadowMapBasic final : public Lesson {
   }
 
   ShadowMap map_;
-  Program depth_program_, eye_program_;
+  Program depth_program_, eye_program_, baseline_program_;
   Sampler raw_sampler_;
 };
 

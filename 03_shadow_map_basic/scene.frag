@@ -33,7 +33,11 @@ float toDistance(float depth) {
 
 void main() {
   vec3 n = normalize(vNormal);
+#ifdef NO_SHADOW
+  float shade = 1.0;  // shadow.off: the baseline, no lookup at all
+#else
   float shade = shadowTerm();
+#endif
   if (uMode == 0) {
     outColor = vec4(shadeSurface(uColor, vWorld, n, shade), 1.0);
     return;

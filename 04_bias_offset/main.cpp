@@ -59,6 +59,9 @@ class BiasOffset final : public Lesson {
         Program(lessonFile(LESSON_DIR, "depth.vert"), lessonFile(LESSON_DIR, "depth.frag"));
     eye_program_ =
         Program(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
+    // shadow.off, the baseline: the same shader with no shadow lookup compiled in.
+    baseline_program_ = Program(lessonFile(LESSON_DIR, "scene.vert"),
+                                lessonFile(LESSON_DIR, "scene.frag"), {"NO_SHADOW"});
     // The same depth texture read raw (no compare), border 1 like the map: "nothing in front".
     raw_sampler_ = Sampler::depth(/*compare=*/false);
   }
@@ -92,7 +95,7 @@ class BiasOffset final : public Lesson {
     map_.texture().bind(0);  // sampler2DShadow
     map_.texture().bind(1);  // raw, through raw_sampler_
     raw_sampler_.bind(1);
-    const Program& e = eye_program_;
+    const Program& e = map_.off() ? baseline_program_ : eye_program_;
     e.set("uViewProjection", f.projection * f.view);
     e.set("uShadowMap", 0);
     e.set("uShadowDepth", 1);
@@ -188,7 +191,7 @@ class BiasOffset final : public Lesson {
   }
 
   ShadowMap map_;
-  Program depth_program_, eye_program_;
+  Program depth_program_, eye_program_, baseline_program_;
   Sampler raw_sampler_;
   float last_step_ = 0, last_clip_offset_ = 0, last_clip_near_ = 0, last_clip_far_ = 0;
   float last_texel_world_ = 0;

@@ -37,8 +37,12 @@ float shadowTerm(vec3 n, out float margin) {
 
 void main() {
   vec3 n = geometricNormal(vWorld);
-  float margin;
+  float margin = 0.0;
+#ifdef NO_SHADOW
+  float shade = 1.0;  // shadow.off: the baseline, no lookup at all
+#else
   float shade = shadowTerm(n, margin);
+#endif
   if (uView == 0) {
     outColor = vec4(shadeSurface(uColor, vWorld, normalize(vNormal), shade), 1.0);
   } else if (uView == 1) {

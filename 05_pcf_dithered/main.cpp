@@ -56,6 +56,9 @@ class PcfDithered final : public Lesson {
         Program(lessonFile(LESSON_DIR, "depth.vert"), lessonFile(LESSON_DIR, "depth.frag"));
     eye_program_ =
         Program(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
+    // shadow.off, the baseline: the same shader with no shadow lookup compiled in.
+    baseline_program_ = Program(lessonFile(LESSON_DIR, "scene.vert"),
+                                lessonFile(LESSON_DIR, "scene.frag"), {"NO_SHADOW"});
     // Two compare samplers for the same map: nearest (one texel per tap), linear (hw2x2).
     nearest_ = Sampler::depth(/*compare=*/true, GL_NEAREST);
     linear_ = Sampler::depth(/*compare=*/true, GL_LINEAR);
@@ -93,7 +96,7 @@ class PcfDithered final : public Lesson {
       map_.texture().bind(0);
       const bool linear = mode == "hw2x2" || p.at("shadow.filter").is("linear");
       (linear ? linear_ : nearest_).bind(0);
-      const Program& e = eye_program_;
+      const Program& e = map_.off() ? baseline_program_ : eye_program_;
       e.set("uViewProjection", f.projection * f.view);
       e.set("uShadowMatrix", map_.textureMatrix());  // B * P_light * V_light
       e.set("uShadowMap", 0);
@@ -192,7 +195,7 @@ class PcfDithered final : public Lesson {
   }
 
   ShadowMap map_;
-  Program depth_program_, eye_program_;
+  Program depth_program_, eye_program_, baseline_program_;
   Sampler nearest_, linear_;
   Buffer counters_;
   GLuint counts_[4] = {0, 0, 0, 0};  // taps, filtered, stopped early, facing away

@@ -42,7 +42,11 @@ float shadowTerm(vec3 n, vec3 toLight) {
 
 void main() {
   vec3 n = normalize(cross(dFdx(vWorld), dFdy(vWorld)));  // geometric, facing the eye
+#ifdef NO_SHADOW
+  float shade = 1.0;  // shadow.off: the baseline, no lookup at all
+#else
   float shade = shadowTerm(n, directionToLight(vWorld));
+#endif
   if (uView == 0) {
     outColor = vec4(shadeSurface(uColor, vWorld, normalize(vNormal), shade), 1.0);
   } else if (uView == 1) {

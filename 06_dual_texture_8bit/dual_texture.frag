@@ -39,8 +39,13 @@ void main() {
 #if PASS == 1
   // "Render scene with light disabled -or- dimmed substantially and specular light color of
   // zero": no texture at all.
-  outColor = uOutput == 1 ? vec4(vec3(0.0), 1.0)
-                          : vec4(shadeSurface(uColor, vWorld, normalize(vNormal), 0.0), 1.0);
+#ifdef NO_SHADOW
+  float lit = 1.0;  // shadow.off, the baseline: this one pass, lit, no texture
+#else
+  float lit = 0.0;
+#endif
+  outColor = uOutput == 1 ? vec4(vec3(lit), 1.0)
+                          : vec4(shadeSurface(uColor, vWorld, normalize(vNormal), lit), 1.0);
 #elif PASS == 2
   // "Enable the light source, un-rejected pixels = unshadowed".
   if (!alphaTestPasses(alpha())) discard;

@@ -43,6 +43,7 @@ class DualTexture8bit final : public Lesson {
     for (int pass = 0; pass < 3; ++pass) {
       passes_[pass] = Program(vertex, fragment, {"PASS " + std::to_string(pass)});
     }
+    passes_[3] = Program(vertex, fragment, {"PASS 1", "NO_SHADOW"});  // shadow.off
   }
 
   void render(Frame& f) override {
@@ -93,6 +94,11 @@ class DualTexture8bit final : public Lesson {
   }
 
   void drawPasses(Frame& f) {
+    if (map_.light().off()) {  // the baseline: one lit pass, no map, no lookup
+      auto timing = f.measure.pass("pass1");
+      f.drawObjects(passes_[3], Objects::All);
+      return;
+    }
     {
       // Pass 1 lays the depth pass 2 must equal; switched off, it still does, in no colour.
       auto timing = f.measure.pass("pass1");
@@ -126,7 +132,8 @@ class DualTexture8bit final : public Lesson {
   }
 
   DepthReadback map_{1};
-  Program passes_[3];  // dual_texture.frag compiled as PASS 0 (the views), 1 and 2
+  // dual_texture.frag compiled as PASS 0 (the views), 1, 2, and 1 lit without a map.
+  Program passes_[4];
   SamplesPassedQuery query_;
   long long lit_fragments_ = 0;
 };

@@ -43,6 +43,7 @@ class MultiDigit16bit final : public Lesson {
     passes_[0] = Program(vertex, fragment, {"PASS 1"});
     passes_[1] = Program(vertex, fragment, {"PASS 2"});
     passes_[2] = Program(vertex, lessonFile(LESSON_DIR, "multidigit_pass3.frag"), {"PASS 3"});
+    passes_[3] = Program(vertex, fragment, {"PASS 1", "NO_SHADOW"});  // shadow.off
     digits_view_ =
         Program(commonShaderDir() / "fullscreen.vert", lessonFile(LESSON_DIR, "digits_view.frag"));
   }
@@ -66,7 +67,9 @@ class MultiDigit16bit final : public Lesson {
     }
     drawPasses(f, output == 2);
     // The inset: the little digit, "here is where the information is".
-    if (f.mode != "visibility" && f.params.at("inset").b()) drawDigits(f, 1, /*inset=*/true);
+    if (f.mode != "visibility" && f.params.at("inset").b() && !map_.light().off()) {
+      drawDigits(f, 1, /*inset=*/true);
+    }
   }
 
   void panel(Frame& f) override {
@@ -84,6 +87,11 @@ class MultiDigit16bit final : public Lesson {
  private:
   void drawPasses(Frame& f, bool additive) {
     const Params& p = f.params;
+    if (map_.light().off()) {  // the baseline: one lit pass, no map, no lookup
+      auto timing = f.measure.pass("pass1");
+      f.drawObjects(passes_[3], Objects::All);
+      return;
+    }
     {
       // Pass 1 lays the depth passes 2 and 3 must equal; switched off, in no colour.
       auto timing = f.measure.pass("pass1");
@@ -137,7 +145,8 @@ class MultiDigit16bit final : public Lesson {
   }
 
   DepthReadback map_{2};
-  Program passes_[3];  // PASS 1, 2 (multidigit.frag) and 3 (its early-tests twin)
+  // PASS 1, 2 (multidigit.frag), 3 (its early-tests twin), and 1 lit without a map.
+  Program passes_[4];
   Program digits_view_;
   SamplesPassedQuery queries_[2];
   long long lit_[2] = {0, 0};

@@ -42,7 +42,9 @@ vec4 passColor(float shade, vec4 passesView) {
 }
 
 void main() {
-#if PASS == 1
+#if PASS == 1 && defined(NO_SHADOW)
+  outColor = passColor(1.0, vec4(0.15, 0.15, 0.15, 1.0));  // shadow.off: one pass, lit
+#elif PASS == 1
   outColor = passColor(0.0, vec4(0.15, 0.15, 0.15, 1.0));
 #elif PASS == 2
   float fragmentBig = floor(texture(uRampBig, rampS()).r * 255.0 + 0.5);

@@ -53,11 +53,18 @@ class Atmospherics final : public Lesson {
   void init() override {
     const auto common = commonShaderDir();
     depth_ = Program(common / "light_depth.vert", common / "depth_only.frag");
-    room_ = Program(lessonFile(LESSON_DIR, "room.vert"), lessonFile(LESSON_DIR, "room.frag"));
-    for (int early = 0; early < 2; ++early) {
-      slices_[early] =
-          Program(lessonFile(LESSON_DIR, "slice.vert"), lessonFile(LESSON_DIR, "slice.frag"),
-                  {"EARLY_REJECT " + std::to_string(early)});
+    // [1]: shadow.off, the baseline, compiled with no shadow lookup.
+    for (int off = 0; off < 2; ++off) {
+      std::vector<std::string> defines;
+      if (off == 1) defines.push_back("NO_SHADOW");
+      room_[off] = Program(lessonFile(LESSON_DIR, "room.vert"), lessonFile(LESSON_DIR, "room.frag"),
+                           defines);
+      for (int early = 0; early < 2; ++early) {
+        std::vector<std::string> slice_defines = defines;
+        slice_defines.push_back("EARLY_REJECT " + std::to_string(early));
+        slices_[off][early] = Program(lessonFile(LESSON_DIR, "slice.vert"),
+                                      lessonFile(LESSON_DIR, "slice.frag"), slice_defines);
+      }
     }
     glGenVertexArrays(1, &empty_vao_);
   }
@@ -89,19 +96,20 @@ class Atmospherics final : public Lesson {
       f.clearTarget(f.mode == "air" || f.mode == "visibility" ? glm::vec3(0.0f)
                                                               : glm::vec3(0.02f, 0.02f, 0.03f));
       bindLightTextures();
-      room_.set("uViewProjection", f.projection * f.view);
-      room_.set("uShadowMatrix", map_.textureMatrix());
-      room_.set("uSpotMatrix", biasMatrix() * cone);
-      room_.set("uLightPos", f.light.position);
-      room_.set("uEye", f.eye);
-      room_.set("uDimming", p.at("dimming").f());
-      room_.set("uOutput", f.mode == "visibility" ? 1
-                           : f.mode == "spot"     ? 2
-                           : f.mode == "air"      ? 3
-                                                  : 0);
-      room_.set("uSpot", 0);
-      room_.set("uShadowMap", 1);
-      f.drawObjects(room_, Objects::All);
+      const Program& room = room_[map_.off() ? 1 : 0];
+      room.set("uViewProjection", f.projection * f.view);
+      room.set("uShadowMatrix", map_.textureMatrix());
+      room.set("uSpotMatrix", biasMatrix() * cone);
+      room.set("uLightPos", f.light.position);
+      room.set("uEye", f.eye);
+      room.set("uDimming", p.at("dimming").f());
+      room.set("uOutput", f.mode == "visibility" ? 1
+                          : f.mode == "spot"     ? 2
+                          : f.mode == "air"      ? 3
+                                                 : 0);
+      room.set("uSpot", 0);
+      room.set("uShadowMap", 1);
+      f.drawObjects(room, Objects::All);
     }
     // 4. The air.
     if (f.mode == "shaded" || f.mode == "air") drawSlices(f, cone);
@@ -230,7 +238,7 @@ class Atmospherics final : public Lesson {
     passed_ = 0;
     if (!(step_ > 0.0f)) return;  // the cone lies behind the eye
     const bool early = p.at("air.early_reject").b();
-    const Program& slices = slices_[early ? 1 : 0];
+    const Program& slices = slices_[map_.off() ? 1 : 0][early ? 1 : 0];
     const float tan_y = std::tan(glm::radians(p.at("camera.fov").f()) * 0.5f);
     const float aspect = static_cast<float>(f.width) / static_cast<float>(std::max(f.height, 1));
     glProgramUniform4fv(slices.id(), slices.location("uRects"), slices_drawn_, &rects_[0][0]);
@@ -266,7 +274,7 @@ class Atmospherics final : public Lesson {
   }
 
   ShadowMap map_;
-  Program depth_, room_, slices_[2];  // slices_[1]: EARLY_REJECT
+  Program depth_, room_[2], slices_[2][2];  // [shadow.off][air.early_reject]
   SpotTexture spot_;
   Texture spot_texture_;
   std::string spot_key_;

@@ -11,6 +11,9 @@ float spotLight(vec4 c) {
 }
 
 float shadowTest(vec4 c) {
+#ifdef NO_SHADOW
+  return 1.0;  // shadow.off, the baseline: no map, no lookup
+#endif
   if (c.w <= 0.0) return 1.0;
   c.z = min(c.z, c.w);  // beyond the far plane nothing casts (lesson 03)
   return textureProj(uShadowMap, c);

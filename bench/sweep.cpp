@@ -157,6 +157,20 @@ const std::map<std::string, Sweep>& sweeps() {
         .plot_metrics = {"false_shadow_pct", "false_lit_pct"},
         .plot_along = true,
         .study = true}},
+      {"shadow_cost",
+       // What a shadow costs (issue 10): every shadowing lesson at its defaults, its frame
+       // against the same frame with shadow.off (no map, no lookup: the baseline), interleaved
+       // in one run, with the map cached (a static scene) and re-rendered every frame.
+       {.scenes = {"torus_pyramid", "grazing", "dueling", "cubes"},
+        .axes = {{"shadow.off", {"false", "true"}},
+                 {"lesson",
+                  {"03:lesson=03_shadow_map_basic", "04:lesson=04_bias_offset",
+                   "05:lesson=05_pcf_dithered pcf.count=false", "06:lesson=06_dual_texture_8bit",
+                   "07:lesson=07_multidigit_16bit", "08:lesson=08_atmospherics"}},
+                 {"shadow.cache", {"true", "false"}}},
+        .fixed = {"inset=false"},
+        .plot_metrics = {"vis_mae"},
+        .study = true}},
       {"08_atmospherics",
        // Slices against the air's error: where more slices stop paying (the map's resolution
        // or the truth's own noise), with and without jitter, on two map sizes.

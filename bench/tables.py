@@ -5,6 +5,7 @@ READMEs quote comes from a command anyone can re-run:
   build/bench/bench_sweep --lesson precision_study   # and 06_dual_texture_8bit, 07_multidigit_16bit
   bench/tables.py precision bench/results/precision_study.csv
   bench/tables.py copy bench/results/06_dual_texture_8bit.csv bench/results/07_multidigit_16bit.csv
+  bench/tables.py cost bench/results/shadow_cost.csv
 """
 import csv
 import statistics
@@ -88,9 +89,33 @@ def copy(paths):
                       f" | {sizes[1] / sizes[0]:.1f}× | {sizes[3] / sizes[2]:.1f}× | {bits_ratio:.2f}× |")
 
 
+def cost(path):
+    """The shadow_cost study: each lesson's frame over its unshadowed baseline, same run."""
+    data = rows(path)
+    print("\nwhat a shadow costs: frame with shadows / the same frame with shadow.off (medians "
+          "over the scenes; 1.00 = free)\n")
+    print("| lesson | map cached: frame ms | baseline ms | ratio | map every frame: frame ms "
+          "| ratio | map pass ms |")
+    print("|---|---|---|---|---|---|---|")
+    for lesson in ordered(r["lesson"] for r in data):
+        def med(cache, off, key="frame_ms"):
+            vals = [num(r, key) for r in data if r["lesson"] == lesson
+                    and r["shadow.cache"] == cache and r["shadow.off"] == off]
+            vals = [v for v in vals if v is not None]
+            return statistics.median(vals) if vals else float("nan")
+        base = med("true", "true")
+        cached, fresh = med("true", "false"), med("false", "false")
+        # The baseline renders no map, cached or not: both columns share it.
+        base_fresh = med("false", "true")
+        print(f"| {lesson} | {cached:.1f} | {base:.1f} | {cached / base:.2f}× | {fresh:.1f} | "
+              f"{fresh / base_fresh:.2f}× | {med('false', 'false', 'pass_ms.shadow'):.1f} |")
+
+
 if __name__ == "__main__":
     if len(sys.argv) >= 3 and sys.argv[1] == "precision":
         precision(sys.argv[2])
+    elif len(sys.argv) >= 3 and sys.argv[1] == "cost":
+        cost(sys.argv[2])
     elif len(sys.argv) >= 3 and sys.argv[1] == "copy":
         copy(sys.argv[2:])
     else:

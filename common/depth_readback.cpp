@@ -300,7 +300,7 @@ void DepthReadback::panel(const Frame& f) const {
 }
 
 void DepthReadback::drawInset(const Frame& frame, bool fullscreen) const {
-  if (!inset_ && !fullscreen) return;
+  if ((!inset_ || light_.off()) && !fullscreen) return;
   const Texture& map = lookupTexture();
   if (!linear_ && path_ != "read_pixels") {
     const LightFrustum& fr = light_.frustum();

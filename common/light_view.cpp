@@ -22,6 +22,10 @@ void LightView::declareFit(Params& p) {
             kDirtyShadowMap);
   p.addBool("shadow.cache", true, "re-render the map only when the light or a caster changed",
             kDirtyShadowMap);
+  p.addBool("shadow.off", false,
+            "baseline: the same frame with no shadow work (no map, no lookup), for what a "
+            "shadow costs",
+            kDirtyShadowMap);
 }
 
 glm::ivec2 LightView::mapSize(const Params& p) {
@@ -32,8 +36,9 @@ glm::ivec2 LightView::mapSize(const Params& p) {
 
 bool LightView::update(Frame& f, glm::ivec2 size, bool recreated, std::uint32_t extraDirty) {
   Params& p = f.params;
+  off_ = p.at("shadow.off").b();
   const bool stale =
-      p.consume(kDirtyShadowMap | extraDirty) || !p.at("shadow.cache").b() || recreated;
+      (p.consume(kDirtyShadowMap | extraDirty) || !p.at("shadow.cache").b() || recreated) && !off_;
   size_ = size;
   frustum_ = f.light.frustum(static_cast<float>(size.x) / static_cast<float>(size.y));
   if (p.at("shadow.fit").b()) {

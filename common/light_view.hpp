@@ -13,7 +13,7 @@ class LightView {
  public:
   // shadow.size and shadow.height: the map's texels.
   static void declareSize(Params& params);
-  // shadow.fit and shadow.cache.
+  // shadow.fit, shadow.cache and shadow.off (the unshadowed baseline).
   static void declareFit(Params& params);
   // The map size the parameters ask for (height 0 = square).
   static glm::ivec2 mapSize(const Params& params);
@@ -31,6 +31,8 @@ class LightView {
   // B * P_light * V_light: world space to (s, t, r, q).
   glm::mat4 textureMatrix() const { return shadowTextureMatrix(projection_, view_); }
   glm::ivec2 size() const { return size_; }
+  // shadow.off: the lesson draws its frame without any shadow work (update() renders no map).
+  bool off() const { return off_; }
   // The world size of one texel (along the map's height) at distance d along the light's
   // axis is x * d + y: a spot's texels grow with distance (x = 2 tan(fov/2) / rows, y = 0),
   // a directional light's do not (x = 0, y = 2 extent / rows).
@@ -44,6 +46,7 @@ class LightView {
   LightFrustum frustum_;
   glm::mat4 projection_{1.0f}, view_{1.0f};
   glm::ivec2 size_{0};
+  bool off_ = false;
 };
 
 }  // namespace shadows

@@ -47,7 +47,7 @@ bool ShadowMap::drawDepthView(const Frame& frame) const {
 }
 
 void ShadowMap::drawInset(const Frame& frame, bool fullscreen) const {
-  if (!inset_ && !fullscreen) return;
+  if ((!inset_ || light_.off()) && !fullscreen) return;
   const LightFrustum& fr = light_.frustum();
   frame.drawDepthInset(texture_, fr.near, fr.far, !fr.directional, fullscreen);
 }

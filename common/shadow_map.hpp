@@ -36,6 +36,7 @@ class ShadowMap {
   void drawInset(const Frame& frame, bool fullscreen = false) const;
 
   const Texture& texture() const { return texture_; }
+  bool off() const { return light_.off(); }
   int width() const { return light_.size().x; }
   int height() const { return light_.size().y; }
   const LightView& light() const { return light_; }

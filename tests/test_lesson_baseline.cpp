@@ -1,0 +1,47 @@
+// shadow.off, the unshadowed baseline every shadowing lesson offers (issue 10): the same frame
+// with no shadow work at all, so reports and the benchmark can say what the shadow costs.
+#include "harness.hpp"
+
+namespace shadows {
+namespace {
+
+std::vector<std::string> lessonsWithABaseline() {
+  std::vector<std::string> names;
+  for (const std::string& lesson : registeredLessons()) {
+    auto runner = std::make_unique<Runner>(lesson, makeLesson(lesson), RunOptions{});
+    if (runner->params().find("shadow.off") != nullptr) names.push_back(lesson);
+  }
+  return names;
+}
+
+class Baseline : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Baseline, RendersNoMapAndLightsEverything) {
+  auto runner = testing::startLesson(GetParam(), {"shadow.cache=false"}, 160, 120);
+  runner->renderFrame();
+  EXPECT_EQ(runner->measure().lastFrameCounts().at("shadow_map_renders"), 1);
+  ASSERT_EQ(runner->params().set("shadow.off", "true"), "");
+  runner->renderFrame();
+  const auto& work = runner->measure().lastFrameWork();
+  EXPECT_EQ(runner->measure().lastFrameCounts().at("shadow_map_renders"), 0);
+  EXPECT_EQ(work.count("shadow"), 0u) << "no map pass";
+  EXPECT_EQ(work.count("readback"), 0u);
+  // Everything lit: nothing the truth calls lit is drawn shadowed, and every shadow is missed.
+  const ErrorMetrics& e = runner->measureError().metrics;
+  EXPECT_EQ(e.false_shadow_pct, 0.0);
+  EXPECT_GT(e.false_lit_pct, 1.0);
+  EXPECT_EQ(runner->glErrors(), 0);
+  // Back on: the map is rendered again.
+  ASSERT_EQ(runner->params().set("shadow.off", "false"), "");
+  ASSERT_EQ(runner->params().set("shadow.cache", "true"), "");
+  runner->renderFrame();
+  EXPECT_EQ(runner->measure().lastFrameCounts().at("shadow_map_renders"), 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(Lessons, Baseline, ::testing::ValuesIn(lessonsWithABaseline()),
+                         [](const ::testing::TestParamInfo<std::string>& lesson) {
+                           return lesson.param;
+                         });
+
+}  // namespace
+}  // namespace shadows
