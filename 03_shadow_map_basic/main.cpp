@@ -35,11 +35,15 @@ class ShadowMapBasic final : public Lesson {
   void init() override {
     depth_program_ =
         Program(lessonFile(LESSON_DIR, "depth.vert"), lessonFile(LESSON_DIR, "depth.frag"));
-    eye_program_ =
-        Program(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
-    // shadow.off, the baseline: the same shader with no shadow lookup compiled in.
-    baseline_program_ = Program(lessonFile(LESSON_DIR, "scene.vert"),
-                                lessonFile(LESSON_DIR, "scene.frag"), {"NO_SHADOW"});
+    // scene.frag compiled once per view, with the lookup and without it (shadow.off).
+    for (int off = 0; off < 2; ++off) {
+      for (int mode = 0; mode < 5; ++mode) {
+        std::vector<std::string> defines = {"MODE " + std::to_string(mode)};
+        if (off == 1) defines.push_back("NO_SHADOW");
+        eye_programs_[off][mode] = Program(lessonFile(LESSON_DIR, "scene.vert"),
+                                           lessonFile(LESSON_DIR, "scene.frag"), defines);
+      }
+    }
     raw_sampler_ = Sampler::depth(/*compare=*/false);
   }
 
@@ -63,12 +67,11 @@ class ShadowMapBasic final : public Lesson {
     map_.texture().bind(1);  // the same texture read raw, for the debug views
     raw_sampler_.bind(1);
     const bool from_light = f.mode == "light_view";
-    const Program& e = map_.off() ? baseline_program_ : eye_program_;
+    const Program& e = eye_programs_[map_.off() ? 1 : 0][modeIndex(f.mode)];
     e.set("uViewProjection", from_light ? map_.lightViewProjection() : f.projection * f.view);
     e.set("uShadowMatrix", biasMatrix() * map_.lightProjection() * map_.lightView());
     e.set("uShadowMap", 0);
     e.set("uShadowDepth", 1);
-    e.set("uMode", modeIndex(f.mode));
     e.set("uLightNear", map_.frustum().near);
     e.set("uLightFar", map_.frustum().far);
     e.set("uLightPerspective", map_.frustum().directional ? 0 : 1);
@@ -99,7 +102,7 @@ class ShadowMapBasic final : public Lesson {
   }
 
   ShadowMap map_;
-  Program depth_program_, eye_program_, baseline_program_;
+  Program depth_program_, eye_programs_[2][5];  // [shadow.off][view]
   Sampler raw_sampler_;
 };
 

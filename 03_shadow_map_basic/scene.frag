@@ -9,7 +9,11 @@ in vec4 vShadowCoord;
 uniform sampler2DShadow uShadowMap;  // compare mode on
 uniform sampler2D uShadowDepth;      // the same texture, read raw for the debug views
 uniform vec3 uColor;
-uniform int uMode;  // 0 shaded, 1 visibility, 2 projected depth A, 3 light distance B, 4 compare
+// Compiled per view (main.cpp), so the shaded frame runs only the shading:
+//   MODE 0 shaded, 1 visibility, 2 projected depth A, 3 light distance B, 4 compare
+#ifndef MODE
+#define MODE 0
+#endif
 uniform float uLightNear;
 uniform float uLightFar;
 uniform int uLightPerspective;
@@ -38,14 +42,11 @@ void main() {
 #else
   float shade = shadowTerm();
 #endif
-  if (uMode == 0) {
-    outColor = vec4(shadeSurface(uColor, vWorld, n, shade), 1.0);
-    return;
-  }
-  if (uMode == 1) {
-    outColor = vec4(vec3(shade), 1.0);
-    return;
-  }
+#if MODE == 0
+  outColor = vec4(shadeSurface(uColor, vWorld, n, shade), 1.0);
+#elif MODE == 1
+  outColor = vec4(vec3(shade), 1.0);
+#else
   vec3 c = vShadowCoord.xyz / max(vShadowCoord.w, 1e-6);
   bool inside = vShadowCoord.w > 0.0 && all(greaterThanEqual(c.xy, vec2(0.0))) &&
                 all(lessThanEqual(c.xy, vec2(1.0)));
@@ -53,14 +54,17 @@ void main() {
   float b = toDistance(clamp(c.z, 0.0, 1.0));
   if (!inside) {
     outColor = vec4(vec3(0.25), 1.0);
-  } else if (uMode == 2) {
-    outColor = vec4(vec3(a), 1.0);
-  } else if (uMode == 3) {
-    outColor = vec4(vec3(b), 1.0);
   } else {
+#if MODE == 2
+    outColor = vec4(vec3(a), 1.0);
+#elif MODE == 3
+    outColor = vec4(vec3(b), 1.0);
+#else
     // Kilgard's comparison: green where A and B agree (lit), the plain surface where B > A.
     float lit = shade;
     vec3 plain = shadeSurface(uColor, vWorld, n, 0.0);
     outColor = vec4(mix(plain, vec3(0.1, 0.9, 0.2) * (0.3 + 0.7 * max(dot(n, directionToLight(vWorld)), 0.0)), lit), 1.0);
+#endif
   }
+#endif
 }

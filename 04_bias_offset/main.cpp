@@ -17,6 +17,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <map>
 
 #include "app.hpp"
 #include "json.hpp"
@@ -57,11 +58,6 @@ class BiasOffset final : public Lesson {
   void init() override {
     depth_program_ =
         Program(lessonFile(LESSON_DIR, "depth.vert"), lessonFile(LESSON_DIR, "depth.frag"));
-    eye_program_ =
-        Program(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
-    // shadow.off, the baseline: the same shader with no shadow lookup compiled in.
-    baseline_program_ = Program(lessonFile(LESSON_DIR, "scene.vert"),
-                                lessonFile(LESSON_DIR, "scene.frag"), {"NO_SHADOW"});
     // The same depth texture read raw (no compare), border 1 like the map: "nothing in front".
     raw_sampler_ = Sampler::depth(/*compare=*/false);
   }
@@ -95,12 +91,16 @@ class BiasOffset final : public Lesson {
     map_.texture().bind(0);  // sampler2DShadow
     map_.texture().bind(1);  // raw, through raw_sampler_
     raw_sampler_.bind(1);
-    const Program& e = map_.off() ? baseline_program_ : eye_program_;
+    const Program& e = eyeProgram(mode == "gradient"        ? 1
+                                  : mode == "normal_offset" ? 2
+                                                            : 0,
+                                  f.mode == "visibility"    ? 1
+                                  : f.mode == "bias_margin" ? 2
+                                                            : 0,
+                                  map_.off());
     e.set("uViewProjection", f.projection * f.view);
     e.set("uShadowMap", 0);
     e.set("uShadowDepth", 1);
-    e.set("uView", f.mode == "visibility" ? 1 : f.mode == "bias_margin" ? 2 : 0);
-    e.set("uReceiver", mode == "gradient" ? 1 : mode == "normal_offset" ? 2 : 0);
     e.set("uFactor", factor);
     e.set("uUnits", units * 1e-3f);  // gradient: the light-space constant, in world units
     e.set("uClamp", f.params.at("bias.clamp").f());
@@ -154,6 +154,24 @@ class BiasOffset final : public Lesson {
     return "lookup lifted factor texels along the normal, + units";
   }
 
+  // scene.frag compiled for one receiver bias and one view (and without the lookup for
+  // shadow.off), once, when a setting first asks for it: a frame runs only its own code.
+  const Program& eyeProgram(int receiver, int view, bool off) {
+    std::vector<std::string> defines = {"RECEIVER " + std::to_string(receiver),
+                                        "VIEW " + std::to_string(view)};
+    if (off) defines.push_back("NO_SHADOW");
+    std::string key;
+    for (const auto& d : defines) key += d + ";";
+    auto it = eye_programs_.find(key);
+    if (it == eye_programs_.end()) {
+      it = eye_programs_
+               .emplace(key, Program(lessonFile(LESSON_DIR, "scene.vert"),
+                                     lessonFile(LESSON_DIR, "scene.frag"), defines))
+               .first;
+    }
+    return it->second;
+  }
+
   static void setOffset(Params& p, float factor, float units) {
     p.setFloat(p.at("bias.factor"), factor);
     p.setFloat(p.at("bias.units"), units);
@@ -191,7 +209,8 @@ class BiasOffset final : public Lesson {
   }
 
   ShadowMap map_;
-  Program depth_program_, eye_program_, baseline_program_;
+  Program depth_program_;
+  std::map<std::string, Program> eye_programs_;  // by variant (eyeProgram)
   Sampler raw_sampler_;
   float last_step_ = 0, last_clip_offset_ = 0, last_clip_near_ = 0, last_clip_far_ = 0;
   float last_texel_world_ = 0;

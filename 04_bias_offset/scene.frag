@@ -9,8 +9,15 @@ in vec3 vNormal;
 uniform sampler2DShadow uShadowMap;  // compare mode on: 1 where B <= A
 uniform sampler2D uShadowDepth;      // the same texture read raw, for the gradient and the views
 uniform vec3 uColor;
-uniform int uView;         // 0 shaded, 1 visibility, 2 bias margin
-uniform int uReceiver;     // 0 nothing (bias is in the map), 1 gradient (002), 2 normal offset
+// Compiled per setting (main.cpp), so a frame runs only its own bias and view:
+//   RECEIVER  0 nothing (the bias is in the map), 1 gradient (002), 2 normal offset
+//   VIEW      0 shaded, 1 visibility, 2 bias margin
+#ifndef RECEIVER
+#define RECEIVER 0
+#endif
+#ifndef VIEW
+#define VIEW 0
+#endif
 uniform float uFactor;     // bias.factor: gradient scale, or normal offset in texels
 uniform float uUnits;      // bias.units: the gradient's light-space constant (world units)
 uniform float uClamp;      // bias.clamp: the gradient's clamp (world units along the light z)
@@ -20,19 +27,24 @@ out vec4 outColor;
 // The shadow term and the margin A - B the compare saw (negative: shadowed).
 float shadowTerm(vec3 n, out float margin) {
   vec3 p = vWorld;
-  if (uReceiver == 2) p = normalOffsetPoint(p, n, directionToLight(vWorld), uFactor);
+#if RECEIVER == 2
+  p = normalOffsetPoint(p, n, directionToLight(vWorld), uFactor);
+#endif
   vec4 c = uShadowMatrix * vec4(p, 1.0);
   margin = 1.0;
   if (c.w <= 0.0) return 1.0;  // behind a spot light: outside its frustum
   c.xyz /= c.w;
   c.z = min(c.z, 1.0);  // beyond the far plane: every depth format clamps B to 1
-  if (uReceiver == 1) {
-    float a = gradientBiasedDepth(uShadowDepth, c.xy, p, uFactor, uUnits, uClamp);
-    margin = a - c.z;
-    return c.z <= a ? 1.0 : 0.0;
-  }
-  if (uView == 2) margin = texture(uShadowDepth, c.xy).r - c.z;
+#if RECEIVER == 1
+  float a = gradientBiasedDepth(uShadowDepth, c.xy, p, uFactor, uUnits, uClamp);
+  margin = a - c.z;
+  return c.z <= a ? 1.0 : 0.0;
+#else
+#if VIEW == 2
+  margin = texture(uShadowDepth, c.xy).r - c.z;
+#endif
   return texture(uShadowMap, c.xyz);
+#endif
 }
 
 void main() {
@@ -43,11 +55,12 @@ void main() {
 #else
   float shade = shadowTerm(n, margin);
 #endif
-  if (uView == 0) {
-    outColor = vec4(shadeSurface(uColor, vWorld, normalize(vNormal), shade), 1.0);
-  } else if (uView == 1) {
-    outColor = vec4(vec3(shade), 1.0);
-  } else {
+#if VIEW == 0
+  outColor = vec4(shadeSurface(uColor, vWorld, normalize(vNormal), shade), 1.0);
+#elif VIEW == 1
+  outColor = vec4(vec3(shade), 1.0);
+#else
+  {
     // The margin in depth steps, one brightness band per decade: green lit with room to
     // spare, red where B > A (acne on a lit surface, true shadow elsewhere).
     float decades = clamp(log2(abs(margin) / uDepthStep + 1.0) / log2(10.0) / 7.0, 0.0, 1.0);
@@ -55,4 +68,5 @@ void main() {
     float facing = max(dot(n, directionToLight(vWorld)), 0.0);
     outColor = vec4(tone * (0.15 + 0.85 * decades) * (0.4 + 0.6 * facing), 1.0);
   }
+#endif
 }
