@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
+#include <map>
 
 #include "app.hpp"
 #include "json.hpp"
@@ -54,11 +55,6 @@ class PcfDithered final : public Lesson {
   void init() override {
     depth_program_ =
         Program(lessonFile(LESSON_DIR, "depth.vert"), lessonFile(LESSON_DIR, "depth.frag"));
-    eye_program_ =
-        Program(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
-    // shadow.off, the baseline: the same shader with no shadow lookup compiled in.
-    baseline_program_ = Program(lessonFile(LESSON_DIR, "scene.vert"),
-                                lessonFile(LESSON_DIR, "scene.frag"), {"NO_SHADOW"});
     // Two compare samplers for the same map: nearest (one texel per tap), linear (hw2x2).
     nearest_ = Sampler::depth(/*compare=*/true, GL_NEAREST);
     linear_ = Sampler::depth(/*compare=*/true, GL_LINEAR);
@@ -96,25 +92,27 @@ class PcfDithered final : public Lesson {
       map_.texture().bind(0);
       const bool linear = mode == "hw2x2" || p.at("shadow.filter").is("linear");
       (linear ? linear_ : nearest_).bind(0);
-      const Program& e = map_.off() ? baseline_program_ : eye_program_;
-      e.set("uViewProjection", f.projection * f.view);
-      e.set("uShadowMatrix", map_.textureMatrix());  // B * P_light * V_light
-      e.set("uShadowMap", 0);
-      e.set("uView", f.mode == "visibility" ? 1 : f.mode == "taps" ? 2 : 0);
       const pcf::Mode kernel = mode == "none"       ? pcf::Mode::None
                                : mode == "hw2x2"    ? pcf::Mode::Hw2x2
                                : mode == "grid"     ? pcf::Mode::Grid
                                : mode == "dithered" ? pcf::Mode::Dithered
                                                     : pcf::Mode::Poisson;
-      e.set("uPcfMode", static_cast<int>(kernel));
+      const Program& e = eyeProgram(
+          {"PCF_MODE " + std::to_string(static_cast<int>(kernel)),
+           std::string("VIEW ") + (f.mode == "visibility" ? "1"
+                                   : f.mode == "taps"     ? "2"
+                                                          : "0"),
+           std::string("EARLY_OUT ") + (p.at("pcf.early_out").b() ? "1" : "0"),
+           std::string("COUNT ") + (counting ? "1" : "0"), map_.off() ? "NO_SHADOW" : "SHADOW"});
+      e.set("uViewProjection", f.projection * f.view);
+      e.set("uShadowMatrix", map_.textureMatrix());  // B * P_light * V_light
+      e.set("uShadowMap", 0);
       e.set("uGridSide", grid);
       // The offsets the unit tests check are the ones the shader takes (pcf_math.hpp).
       const std::vector<glm::vec2> taps = pcf::tapOffsets(kernel, p.at("pcf.taps").i(), radius);
       glProgramUniform2fv(e.id(), e.location("uTaps"), static_cast<GLsizei>(taps.size()),
                           glm::value_ptr(taps[0]));
       e.set("uPoissonTaps", static_cast<int>(taps.size()));
-      e.set("uEarlyOut", p.at("pcf.early_out").b() ? 1 : 0);
-      e.set("uCount", counting ? 1 : 0);
       e.set("uTexel", glm::vec2(1.0f / static_cast<float>(map_.width()),
                                 1.0f / static_cast<float>(map_.height())));
       f.setLightingUniforms(e, p.at("dimming").f());
@@ -195,7 +193,23 @@ class PcfDithered final : public Lesson {
   }
 
   ShadowMap map_;
-  Program depth_program_, eye_program_, baseline_program_;
+  // scene.frag + pcf.glsl compiled for one filter, view, early out, counting and shadow.off,
+  // once, when a setting first asks for it: a frame runs only its own kernel.
+  const Program& eyeProgram(const std::vector<std::string>& defines) {
+    std::string key;
+    for (const auto& d : defines) key += d + ";";
+    auto it = eye_programs_.find(key);
+    if (it == eye_programs_.end()) {
+      it = eye_programs_
+               .emplace(key, Program(lessonFile(LESSON_DIR, "scene.vert"),
+                                     lessonFile(LESSON_DIR, "scene.frag"), defines))
+               .first;
+    }
+    return it->second;
+  }
+
+  Program depth_program_;
+  std::map<std::string, Program> eye_programs_;
   Sampler nearest_, linear_;
   Buffer counters_;
   GLuint counts_[4] = {0, 0, 0, 0};  // taps, filtered, stopped early, facing away

@@ -3,10 +3,16 @@
 // The tap offsets are not computed here: pcf_math.hpp (tapOffsets) computes them on the CPU
 // and main.cpp passes them as uTaps, so the unit tests check the very offsets the shader uses.
 uniform sampler2DShadow uShadowMap;
-uniform int uPcfMode;     // 0 none, 1 hw2x2, 2 grid, 3 dithered, 4 poisson
+// Compiled per setting (main.cpp): PCF_MODE 0 none, 1 hw2x2, 2 grid, 3 dithered, 4 poisson;
+// EARLY_OUT 1: stop after 4 probe taps that agree.
+#ifndef PCF_MODE
+#define PCF_MODE 0
+#endif
+#ifndef EARLY_OUT
+#define EARLY_OUT 0
+#endif
 uniform int uGridSide;    // grid: N for N x N taps
 uniform int uPoissonTaps; // poisson: how many of the 64 points
-uniform int uEarlyOut;    // 1: stop after 4 probe taps that agree
 uniform vec2 uTexel;      // 1 / map size
 // Offsets in texels: grid, row by row (N x N); dithered, 4 per pixel-parity pattern
 // (pattern = x mod 2 + 2 (y mod 2)); poisson, the disk's points in order, scaled.
@@ -24,7 +30,7 @@ float tap(vec3 c, vec2 offsetTexels) {
 float pcfGrid(vec3 c) {
   int n = uGridSide, last = n - 1;
   float sum = 0.0;
-  bool probed = uEarlyOut == 1 && n > 2;
+  bool probed = EARLY_OUT == 1 && n > 2;
   if (probed) {
     // The four corners first: if they agree, the neighbourhood is fully lit or fully shadowed
     // (unless something smaller than the kernel hides between them) and the rest is skipped.
@@ -60,7 +66,7 @@ float pcfPoisson(vec3 c) {
   int n = uPoissonTaps;
   float sum = 0.0;
   int first = 0;
-  if (uEarlyOut == 1 && n > 4) {
+  if (EARLY_OUT == 1 && n > 4) {
     for (int k = 0; k < 4; ++k) sum += tap(c, uTaps[k]);
     if (sum == 0.0 || sum == 4.0) {
       gStopped = true;
@@ -74,8 +80,13 @@ float pcfPoisson(vec3 c) {
 
 // c: (s, t, r) after the divide by q.
 float percentageCloser(vec3 c) {
-  if (uPcfMode == 2) return pcfGrid(c);
-  if (uPcfMode == 3) return pcfDithered(c);
-  if (uPcfMode == 4) return pcfPoisson(c);
+#if PCF_MODE == 2
+  return pcfGrid(c);
+#elif PCF_MODE == 3
+  return pcfDithered(c);
+#elif PCF_MODE == 4
+  return pcfPoisson(c);
+#else
   return tap(c, vec2(0.0));  // none (nearest) or hw2x2 (the sampler is LINEAR: 4 texels, weighted)
+#endif
 }

@@ -10,8 +10,14 @@ in vec3 vWorld;
 in vec3 vNormal;
 in vec4 vShadowCoord;
 uniform vec3 uColor;
-uniform int uView;   // 0 shaded, 1 visibility, 2 taps per fragment
-uniform int uCount;  // 1: add this fragment's work to the counters (atomics cost a little)
+// Compiled per setting (main.cpp): VIEW 0 shaded, 1 visibility, 2 taps per fragment; COUNT 1
+// adds this fragment's work to the counters (atomics cost; compiled out when off).
+#ifndef VIEW
+#define VIEW 0
+#endif
+#ifndef COUNT
+#define COUNT 0
+#endif
 out vec4 outColor;
 layout(std430, binding = 0) buffer Counters {
   uint taps;         // shadow-map lookups
@@ -24,7 +30,7 @@ float shadowTerm(vec3 n, vec3 toLight) {
   // Facing away from the light (the geometric normal, as the truth sees it): in its own
   // shadow, whatever the map says. No taps.
   if (dot(n, toLight) <= 0.0) {
-    if (uCount == 1) atomicAdd(facing_away, 1u);
+    if (COUNT == 1) atomicAdd(facing_away, 1u);
     return 0.0;
   }
   vec4 c = vShadowCoord;
@@ -32,7 +38,7 @@ float shadowTerm(vec3 n, vec3 toLight) {
   vec3 p = c.xyz / c.w;
   p.z = min(p.z, 1.0);  // beyond the far plane: every depth format clamps B to 1
   float shade = percentageCloser(p);
-  if (uCount == 1) {
+  if (COUNT == 1) {
     atomicAdd(taps, uint(gTaps));
     atomicAdd(filtered, 1u);
     if (gStopped) atomicAdd(stopped, 1u);
@@ -47,15 +53,21 @@ void main() {
 #else
   float shade = shadowTerm(n, directionToLight(vWorld));
 #endif
-  if (uView == 0) {
+#if VIEW == 0
+  {
     outColor = vec4(shadeSurface(uColor, vWorld, normalize(vNormal), shade), 1.0);
-  } else if (uView == 1) {
+  }
+#elif VIEW == 1
+  {
     outColor = vec4(vec3(shade), 1.0);
-  } else {
+  }
+#else
+  {
     // Taps per fragment: black 0, blue 4, through green, to red at 64.
     float t = clamp(log2(float(gTaps) + 1.0) / log2(65.0), 0.0, 1.0);
     vec3 heat = t < 0.5 ? mix(vec3(0.0, 0.1, 0.8), vec3(0.1, 0.8, 0.2), 2.0 * t)
                         : mix(vec3(0.1, 0.8, 0.2), vec3(0.95, 0.1, 0.05), 2.0 * t - 1.0);
     outColor = vec4(gTaps == 0 ? vec3(0.0) : heat * (0.5 + 0.5 * shade), 1.0);
   }
+#endif
 }
