@@ -124,8 +124,9 @@ struct RunOptions {
   std::string backend = "osmesa";
   int width = 800, height = 600;
   int frames = 5;
-  bool panel = false;  // draw the ImGui panel into headless snapshots too
-  bool truth = true;   // measure error against the ray-traced truth
+  bool panel = false;       // draw the ImGui panel into headless snapshots too
+  bool hide_panel = false;  // a window without the panel (key H toggles it)
+  bool truth = true;        // measure error against the ray-traced truth
   std::string out, report, truth_out, error_out;
   std::vector<std::string> sets;
   bool list_params = false, help = false;

@@ -36,6 +36,7 @@ const char* kUsage =
     "  --out FILE.png       write the final frame (default out/LESSON.png; in a window:\n"
     "                       --frames frames, then exit)\n"
     "  --panel              draw the ImGui panel into the headless picture too\n"
+    "  --hide-panel         a window without the panel (the key H shows and hides it)\n"
     "  --set name=value     set a parameter (repeatable); see --list-params\n"
     "  --list-params        list every parameter: name, type, default, range, help\n"
     "  --report FILE.json   parameters, timings, work counters, error against the truth\n"
@@ -98,6 +99,8 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
       o.headless = true;
     } else if (arg == "--window") {
       o.force_window = true;
+    } else if (arg == "--hide-panel") {
+      o.hide_panel = true;
     } else if (arg == "--panel") {
       o.panel = true;
     } else if (arg == "--no-truth") {

@@ -53,6 +53,7 @@ int Runner::runWindow() {
   gpu_->imgui = gpu_->imgui_glfw = true;
 
   double last_x = 0, last_y = 0;
+  bool h_was_down = false;
   bool dragging = false;
   auto changed_at = std::chrono::steady_clock::now();
   std::string last_key;
@@ -92,6 +93,10 @@ int Runner::runWindow() {
       params_.setVec3(pos, target + (pos.v() - target) * std::pow(0.9f, io.MouseWheel));
     }
     if (glfwGetKey(window, GLFW_KEY_F12) == GLFW_PRESS) screenshot_requested_ = true;
+    // H hides or shows the panel (on the key's press, not while it is held).
+    const bool h_down = glfwGetKey(window, GLFW_KEY_H) == GLFW_PRESS;
+    if (h_down && !h_was_down && !io.WantTextInput) options_.hide_panel = !options_.hide_panel;
+    h_was_down = h_down;
 
     int w = 0, h = 0;
     glfwGetFramebufferSize(window, &w, &h);
@@ -106,7 +111,7 @@ int Runner::runWindow() {
       if (options_.truth && resting && key != error_key_ && !ImGui::IsAnyItemActive()) {
         measureError();
       }
-      renderInto(0, w, h, params_.at("view").choice(), true, true);
+      renderInto(0, w, h, params_.at("view").choice(), true, !options_.hide_panel);
       GlErrorLog::poll();
       if (screenshot_requested_) {
         screenshot_requested_ = false;

@@ -30,3 +30,12 @@ if xvfb-run -a -s "-screen 0 1024x768x24" "$first" --window --size 320x240 --fra
 fi
 test ! -e "$out/f.png" || { echo "the window's picture stayed without its report"; exit 1; }
 echo "window outputs ok"
+# --hide-panel: the same window without the panel, so it costs what headless costs.
+xvfb-run -a -s "-screen 0 1024x768x24" "$first" --window --size 320x240 --frames 1 \
+  --hide-panel --out "$out/hidden.png" --report "$out/hidden.json"
+# The same window with the panel (w.png above) differs from it only where the panel was.
+if cmp -s "$out/w.png" "$out/hidden.png"; then
+  echo "--hide-panel: the picture is the same as with the panel"
+  exit 1
+fi
+echo "hidden panel ok"
