@@ -87,6 +87,29 @@ Sweep copyCostSweep() {
           .plot_metrics = {"false_shadow_pct", "false_lit_pct"}};
 }
 
+// What a shadow costs (issue 10): every lesson with a shadow.off baseline, at its defaults,
+// its frame against the same frame with no shadow work, interleaved in one run, with the map
+// cached (a static scene) and re-rendered every frame. A new lesson with the baseline joins by
+// itself; instrumentation (a `*.count` switch) is off, since it is not the shadow.
+Sweep shadowCostSweep() {
+  Axis lessons{"lesson_tag", {}};
+  for (const std::string& name : registeredLessons()) {
+    Runner probe(name, makeLesson(name), RunOptions{});  // parameters only, no GL
+    if (probe.params().find("shadow.off") == nullptr) continue;
+    std::string bundle = name.substr(0, 2) + ":lesson=" + name;
+    for (const Param& p : probe.params().all()) {
+      if (p.kind == ParamKind::Bool && p.name.ends_with(".count"))
+        bundle += " " + p.name + "=false";
+    }
+    lessons.values.push_back(bundle);
+  }
+  return {.scenes = {"torus_pyramid", "grazing", "dueling", "cubes"},
+          .axes = {{"shadow.off", {"false", "true"}}, lessons, {"shadow.cache", {"true", "false"}}},
+          .fixed = {"inset=false"},
+          .plot_metrics = {"vis_mae"},
+          .study = true};
+}
+
 // One entry per lesson. Adding a lesson's sweep is one entry here, e.g. for 04:
 //   {"04_...", {.scenes = {...}, .axes = {{"bias.units", {...}}, {"bias.factor", {...}}}, ...}}
 const std::map<std::string, Sweep>& sweeps() {
@@ -157,20 +180,7 @@ const std::map<std::string, Sweep>& sweeps() {
         .plot_metrics = {"false_shadow_pct", "false_lit_pct"},
         .plot_along = true,
         .study = true}},
-      {"shadow_cost",
-       // What a shadow costs (issue 10): every shadowing lesson at its defaults, its frame
-       // against the same frame with shadow.off (no map, no lookup: the baseline), interleaved
-       // in one run, with the map cached (a static scene) and re-rendered every frame.
-       {.scenes = {"torus_pyramid", "grazing", "dueling", "cubes"},
-        .axes = {{"shadow.off", {"false", "true"}},
-                 {"lesson",
-                  {"03:lesson=03_shadow_map_basic", "04:lesson=04_bias_offset",
-                   "05:lesson=05_pcf_dithered pcf.count=false", "06:lesson=06_dual_texture_8bit",
-                   "07:lesson=07_multidigit_16bit", "08:lesson=08_atmospherics"}},
-                 {"shadow.cache", {"true", "false"}}},
-        .fixed = {"inset=false"},
-        .plot_metrics = {"vis_mae"},
-        .study = true}},
+      {"shadow_cost", shadowCostSweep()},
       {"08_atmospherics",
        // Slices against the air's error: where more slices stop paying (the map's resolution
        // or the truth's own noise), with and without jitter, on two map sizes.
