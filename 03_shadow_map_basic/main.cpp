@@ -35,15 +35,10 @@ class ShadowMapBasic final : public Lesson {
   void init() override {
     depth_program_ =
         Program(lessonFile(LESSON_DIR, "depth.vert"), lessonFile(LESSON_DIR, "depth.frag"));
-    // scene.frag compiled once per view, with the lookup and without it (shadow.off).
-    for (int off = 0; off < 2; ++off) {
-      for (int mode = 0; mode < 5; ++mode) {
-        std::vector<std::string> defines = {"MODE " + std::to_string(mode)};
-        if (off == 1) defines.push_back("NO_SHADOW");
-        eye_programs_[off][mode] = Program(lessonFile(LESSON_DIR, "scene.vert"),
-                                           lessonFile(LESSON_DIR, "scene.frag"), defines);
-      }
-    }
+    // scene.frag compiled per view, with the lookup or without it (shadow.off), when a
+    // setting first asks for it.
+    eye_programs_ =
+        ProgramVariants(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
     raw_sampler_ = Sampler::depth(/*compare=*/false);
   }
 
@@ -67,7 +62,9 @@ class ShadowMapBasic final : public Lesson {
     map_.texture().bind(1);  // the same texture read raw, for the debug views
     raw_sampler_.bind(1);
     const bool from_light = f.mode == "light_view";
-    const Program& e = eye_programs_[map_.off() ? 1 : 0][modeIndex(f.mode)];
+    std::vector<std::string> defines = {"MODE " + std::to_string(modeIndex(f.mode))};
+    if (map_.off()) defines.push_back("NO_SHADOW");
+    const Program& e = eye_programs_.get(defines);
     e.set("uViewProjection", from_light ? map_.lightViewProjection() : f.projection * f.view);
     e.set("uShadowMatrix", biasMatrix() * map_.lightProjection() * map_.lightView());
     e.set("uShadowMap", 0);
@@ -102,7 +99,8 @@ class ShadowMapBasic final : public Lesson {
   }
 
   ShadowMap map_;
-  Program depth_program_, eye_programs_[2][5];  // [shadow.off][view]
+  Program depth_program_;
+  ProgramVariants eye_programs_;
   Sampler raw_sampler_;
 };
 

@@ -17,7 +17,6 @@
 #include <imgui.h>
 
 #include <cmath>
-#include <map>
 
 #include "app.hpp"
 #include "json.hpp"
@@ -58,6 +57,8 @@ class BiasOffset final : public Lesson {
   void init() override {
     depth_program_ =
         Program(lessonFile(LESSON_DIR, "depth.vert"), lessonFile(LESSON_DIR, "depth.frag"));
+    eye_programs_ =
+        ProgramVariants(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
     // The same depth texture read raw (no compare), border 1 like the map: "nothing in front".
     raw_sampler_ = Sampler::depth(/*compare=*/false);
   }
@@ -160,16 +161,7 @@ class BiasOffset final : public Lesson {
     std::vector<std::string> defines = {"RECEIVER " + std::to_string(receiver),
                                         "VIEW " + std::to_string(view)};
     if (off) defines.push_back("NO_SHADOW");
-    std::string key;
-    for (const auto& d : defines) key += d + ";";
-    auto it = eye_programs_.find(key);
-    if (it == eye_programs_.end()) {
-      it = eye_programs_
-               .emplace(key, Program(lessonFile(LESSON_DIR, "scene.vert"),
-                                     lessonFile(LESSON_DIR, "scene.frag"), defines))
-               .first;
-    }
-    return it->second;
+    return eye_programs_.get(defines);
   }
 
   static void setOffset(Params& p, float factor, float units) {
@@ -210,7 +202,7 @@ class BiasOffset final : public Lesson {
 
   ShadowMap map_;
   Program depth_program_;
-  std::map<std::string, Program> eye_programs_;  // by variant (eyeProgram)
+  ProgramVariants eye_programs_;  // scene.frag by variant (eyeProgram)
   Sampler raw_sampler_;
   float last_step_ = 0, last_clip_offset_ = 0, last_clip_near_ = 0, last_clip_far_ = 0;
   float last_texel_world_ = 0;

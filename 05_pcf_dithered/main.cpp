@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
-#include <map>
 
 #include "app.hpp"
 #include "json.hpp"
@@ -55,6 +54,8 @@ class PcfDithered final : public Lesson {
   void init() override {
     depth_program_ =
         Program(lessonFile(LESSON_DIR, "depth.vert"), lessonFile(LESSON_DIR, "depth.frag"));
+    eye_programs_ =
+        ProgramVariants(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
     // Two compare samplers for the same map: nearest (one texel per tap), linear (hw2x2).
     nearest_ = Sampler::depth(/*compare=*/true, GL_NEAREST);
     linear_ = Sampler::depth(/*compare=*/true, GL_LINEAR);
@@ -97,7 +98,7 @@ class PcfDithered final : public Lesson {
                                : mode == "grid"     ? pcf::Mode::Grid
                                : mode == "dithered" ? pcf::Mode::Dithered
                                                     : pcf::Mode::Poisson;
-      const Program& e = eyeProgram(
+      const Program& e = eye_programs_.get(
           {"PCF_MODE " + std::to_string(static_cast<int>(kernel)),
            std::string("VIEW ") + (f.mode == "visibility" ? "1"
                                    : f.mode == "taps"     ? "2"
@@ -193,23 +194,10 @@ class PcfDithered final : public Lesson {
   }
 
   ShadowMap map_;
-  // scene.frag + pcf.glsl compiled for one filter, view, early out, counting and shadow.off,
-  // once, when a setting first asks for it: a frame runs only its own kernel.
-  const Program& eyeProgram(const std::vector<std::string>& defines) {
-    std::string key;
-    for (const auto& d : defines) key += d + ";";
-    auto it = eye_programs_.find(key);
-    if (it == eye_programs_.end()) {
-      it = eye_programs_
-               .emplace(key, Program(lessonFile(LESSON_DIR, "scene.vert"),
-                                     lessonFile(LESSON_DIR, "scene.frag"), defines))
-               .first;
-    }
-    return it->second;
-  }
-
   Program depth_program_;
-  std::map<std::string, Program> eye_programs_;
+  // scene.frag + pcf.glsl compiled for one filter, view, early out, counting and shadow.off,
+  // when a setting first asks for it: a frame runs only its own kernel.
+  ProgramVariants eye_programs_;
   Sampler nearest_, linear_;
   Buffer counters_;
   GLuint counts_[4] = {0, 0, 0, 0};  // taps, filtered, stopped early, facing away

@@ -411,6 +411,15 @@ void Program::use() const {
   glUseProgram(name_.id());
 }
 
+const Program& ProgramVariants::get(const std::vector<std::string>& defines) {
+  std::string key;
+  for (const std::string& d : defines) key += d + ";";
+  auto it = programs_.find(key);
+  if (it == programs_.end())
+    it = programs_.emplace(key, Program(vertex_, fragment_, defines)).first;
+  return it->second;
+}
+
 GLint Program::location(const std::string& name) const {
   auto it = locations_.find(name);
   if (it != locations_.end()) return it->second;

@@ -206,6 +206,20 @@ class Program {
   mutable std::map<std::string, GLint> locations_;
 };
 
+// One vertex + fragment pair compiled per set of defines, on first use, and kept: a lesson
+// whose views and modes are #if blocks of one shader runs only the block its settings need.
+class ProgramVariants {
+ public:
+  ProgramVariants() = default;
+  ProgramVariants(std::filesystem::path vertexFile, std::filesystem::path fragmentFile)
+      : vertex_(std::move(vertexFile)), fragment_(std::move(fragmentFile)) {}
+  const Program& get(const std::vector<std::string>& defines);
+
+ private:
+  std::filesystem::path vertex_, fragment_;
+  std::map<std::string, Program> programs_;  // by the defines, joined
+};
+
 // The preprocessed source and the file behind each GLSL source-string number.
 struct ShaderSource {
   std::string text;
