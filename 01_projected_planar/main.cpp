@@ -36,19 +36,25 @@ class ProjectedPlanar final : public Lesson {
   }
 
   void declare(Params& p) override {
-    p.addFloat("plane.tilt", 0, -40, 40, "tilt the receiver (the floor) about x, degrees");
-    p.addFloat("plane.offset", 0, -1, 1.5f, "move the receiver along its normal");
-    p.addFloat("dimming", 0.4f, 0, 1, "light left under a shadow: the blend keeps this much");
-    p.addBool("fix.receiver", true,
-              "stencil: darken only where the receiver is seen (off: spills past its edge)");
-    p.addBool("fix.once", true,
-              "stencil: darken each pixel once (off: overlapping triangles blend twice)");
-    p.addBool("fix.offset", true,
-              "polygon offset toward the eye (off, with fix.receiver off: z-fighting)");
-    p.addBool("fix.clip", true,
-              "clip casters at the plane (off: parts behind the receiver cast false shadows)");
-    p.addBool("fix.homogeneous", true,
-              "leave w to the clipper (off: divide in the shader; above the light inverts)");
+    tilt_ = p.addFloat("plane.tilt", 0, -40, 40, "tilt the receiver (the floor) about x, degrees");
+    offset_ = p.addFloat("plane.offset", 0, -1, 1.5f, "move the receiver along its normal");
+    dimming_ =
+        p.addFloat("dimming", 0.4f, 0, 1, "light left under a shadow: the blend keeps this much");
+    fix_receiver_ =
+        p.addBool("fix.receiver", true,
+                  "stencil: darken only where the receiver is seen (off: spills past its edge)");
+    fix_once_ =
+        p.addBool("fix.once", true,
+                  "stencil: darken each pixel once (off: overlapping triangles blend twice)");
+    fix_offset_ =
+        p.addBool("fix.offset", true,
+                  "polygon offset toward the eye (off, with fix.receiver off: z-fighting)");
+    fix_clip_ =
+        p.addBool("fix.clip", true,
+                  "clip casters at the plane (off: parts behind the receiver cast false shadows)");
+    fix_homogeneous_ =
+        p.addBool("fix.homogeneous", true,
+                  "leave w to the clipper (off: divide in the shader; above the light inverts)");
   }
 
   void init() override {
@@ -59,7 +65,6 @@ class ProjectedPlanar final : public Lesson {
   }
 
   void render(Frame& f) override {
-    Params& p = f.params;
     const int mode = f.mode == "visibility" ? 1 : f.mode == "overdraw" ? 2 : 0;
     const bool projecting = placeReceiver(f);
 
@@ -74,19 +79,16 @@ class ProjectedPlanar final : public Lesson {
       for (size_t i = 0; i < f.scene.objects.size(); ++i) {
         if (i != receiver_) f.drawObject(scene_program_, i);
       }
-      glEnable(GL_STENCIL_TEST);
-      glStencilMask(0xFF);
-      glStencilFunc(GL_ALWAYS, 1, 0xFF);
-      glStencilOp(GL_KEEP, GL_KEEP, p.at("fix.receiver").b() ? GL_REPLACE : GL_KEEP);
+      PassState mark;
+      mark.stencil_test = true;
+      mark.stencil_ref = 1;
+      mark.stencil_pass = fix_receiver_() ? GL_REPLACE : GL_KEEP;
+      mark.apply();
       if (receiver_ < f.scene.objects.size()) f.drawObject(scene_program_, receiver_);
     }
     if (projecting) drawShadows(f, mode);
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_BLEND);
-    glDisable(GL_POLYGON_OFFSET_FILL);
+    PassState{}.apply();
     glDisable(GL_CLIP_DISTANCE0);
-    glEnable(GL_DEPTH_TEST);
-    glDepthMask(GL_TRUE);
   }
 
   void panel(Frame& f) override {
@@ -132,12 +134,10 @@ class ProjectedPlanar final : public Lesson {
     // The preset's floor (a y-up plane), before our tilt.
     const glm::mat4& preset_model = f.runner.presetModel(receiver_);
     const glm::vec3 centre{preset_model[3]};
-    const glm::mat4 tilt = glm::rotate(glm::mat4(1.0f), glm::radians(f.params.at("plane.tilt").f()),
-                                       glm::vec3(1, 0, 0));
+    const glm::mat4 tilt = glm::rotate(glm::mat4(1.0f), glm::radians(tilt_()), glm::vec3(1, 0, 0));
     const glm::vec3 normal{tilt * glm::vec4(0, 1, 0, 0)};
-    const glm::mat4 model =
-        glm::translate(glm::mat4(1.0f), centre + f.params.at("plane.offset").f() * normal) * tilt *
-        glm::translate(glm::mat4(1.0f), -centre) * preset_model;
+    const glm::mat4 model = glm::translate(glm::mat4(1.0f), centre + offset_() * normal) * tilt *
+                            glm::translate(glm::mat4(1.0f), -centre) * preset_model;
     f.runner.setObjectModel(receiver_, model);
 
     // P = (A, B, C, D) through the floor's centre; L homogeneous: w = 0 for a direction.
@@ -163,7 +163,7 @@ class ProjectedPlanar final : public Lesson {
       lowest = std::min(lowest, d), highest = std::max(highest, d);
     }
     const float light_height = glm::dot(plane_, light_);  // for a point light
-    const bool clip = f.params.at("fix.clip").b();
+    const bool clip = fix_clip_();
     if (light_.w > 0.0f && lowest >= light_height) {
       notes_.push_back(o.name +
                        ": entirely at or above the light, it cannot reach the plane: "
@@ -175,7 +175,7 @@ class ProjectedPlanar final : public Lesson {
       return false;
     }
     if (light_.w > 0.0f && highest >= light_height) {
-      notes_.push_back(o.name + (f.params.at("fix.homogeneous").b()
+      notes_.push_back(o.name + (fix_homogeneous_()
                                      ? ": reaches above the light; the clipper cuts it at w = 0"
                                      : ": reaches above the light; dividing by w in the shader "
                                        "flips that part into an anti-shadow"));
@@ -190,43 +190,40 @@ class ProjectedPlanar final : public Lesson {
   // 2. Each caster again, through M, in black (slide 17: "render selected shadow caster with
   //    framebuffer blending enabled"). The fixes are GL state.
   void drawShadows(Frame& f, int mode) {
-    Params& p = f.params;
     auto timing = f.measure.pass("shadow");
-    const bool receiver = p.at("fix.receiver").b(), once = p.at("fix.once").b();
+    const bool receiver = fix_receiver_(), once = fix_once_();
     // Slide 19: draw only where stencil = 1 (the receiver), and zero it on the way, so every
     // receiver pixel is touched at most once. Without the receiver mark, "once" still works
     // on a stencil that starts at 0.
-    if (receiver || once) {
-      glStencilFunc(GL_EQUAL, receiver ? 1 : 0, 0xFF);
-      glStencilOp(GL_KEEP, GL_KEEP, !once ? GL_KEEP : receiver ? GL_ZERO : GL_INCR);
-    } else {
-      glDisable(GL_STENCIL_TEST);
-    }
+    PassState state;
+    state.stencil_test = receiver || once;
+    state.stencil_func = GL_EQUAL;
+    state.stencil_ref = receiver ? 1 : 0;
+    state.stencil_pass = !once ? GL_KEEP : receiver ? GL_ZERO : GL_INCR;
     // With the stencil mark the receiver is known to be the visible surface there: no depth
     // test at all (slide 19). Without it, the shadow lies exactly in the plane and needs an
     // offset toward the eye to win the depth test (slide 13: "elevate above hit polygon").
-    if (receiver) glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    if (p.at("fix.offset").b()) {
-      glEnable(GL_POLYGON_OFFSET_FILL);
-      glPolygonOffset(-1.0f, -2.0f);
-    }
-    if (p.at("fix.clip").b()) glEnable(GL_CLIP_DISTANCE0);
-    shadow_program_.set("uClip", p.at("fix.clip").b() ? 1 : 0);
-    glEnable(GL_BLEND);
+    state.depth_test = !receiver;
+    state.depth_write = false;
+    state.polygon_offset = fix_offset_();
+    state.offset_factor = -1.0f, state.offset_units = -2.0f;
+    if (fix_clip_()) glEnable(GL_CLIP_DISTANCE0);
+    shadow_program_.set("uClip", fix_clip_() ? 1 : 0);
+    state.blend = true;
     if (mode == 2) {
-      glBlendFunc(GL_ONE, GL_ONE);  // overdraw: each layer adds the same amount
+      state.blend_dst = GL_ONE;  // overdraw: each layer adds the same amount
       shadow_program_.set("uShadowColor", glm::vec4(0.3f, 0.15f, 0.0f, 1.0f));
     } else {
       // dst = dst * (1 - a): a = 1 - dimming, and the shadow term alone is 0 (visibility).
-      glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-      const float a = mode == 1 ? 1.0f : 1.0f - p.at("dimming").f();
+      state.blend_src = GL_SRC_ALPHA, state.blend_dst = GL_ONE_MINUS_SRC_ALPHA;
+      const float a = mode == 1 ? 1.0f : 1.0f - dimming_();
       shadow_program_.set("uShadowColor", glm::vec4(0.0f, 0.0f, 0.0f, a));
     }
+    state.apply();
     shadow_program_.set("uShadowMatrix", planarShadowMatrix(plane_, light_));
     shadow_program_.set("uViewProjection", f.projection * f.view);
     shadow_program_.set("uPlane", plane_);
-    shadow_program_.set("uDivide", p.at("fix.homogeneous").b() ? 0 : 1);
+    shadow_program_.set("uDivide", fix_homogeneous_() ? 0 : 1);
     long long skipped = 0;
     for (size_t i = 0; i < f.scene.objects.size(); ++i) {
       if (!f.scene.objects[i].caster || i == receiver_) continue;
@@ -245,6 +242,8 @@ class ProjectedPlanar final : public Lesson {
   glm::vec4 plane_{0.0f}, light_{0.0f};
   long long casters_drawn_ = 0;
   std::vector<std::string> notes_;
+  FloatParam tilt_, offset_, dimming_;
+  BoolParam fix_receiver_, fix_once_, fix_offset_, fix_clip_, fix_homogeneous_;
 };
 
 SHADOWS_LESSON(ProjectedPlanar);

@@ -67,17 +67,17 @@ class ProjectiveTexture final : public Lesson {
   std::vector<std::string> debugViews() const override { return {"texcoords", "slide"}; }
 
   void declare(Params& p) override {
-    Param& image = p.addString("projector.image", "builtin",
-                               "builtin (a procedural slide) or the path of a PNG to project");
-    // Checked when set, so a missing, broken or non-PNG file is bad input, named, before any
-    // frame.
-    image.check = checkPngParam;
-    p.addFloat("falloff", 0, 0, 1,
-               "spotlight falloff: the slide fades over this part of the cone, 0 = off");
-    p.addBool("fix.q_test", true, "no light where q <= 0, i.e. behind the projector");
-    p.addChoice("fix.behind", {"off", "skip", "clip"}, "skip",
-                "geometry behind the projector: skip whole objects, or clip at its plane");
-    p.addBool("inset", true, "show the slide in a corner");
+    // Checked when set: a missing, broken or non-PNG file is bad input, named, before any frame.
+    image_ = p.addString("projector.image", "builtin",
+                         "builtin (a procedural slide) or the path of a PNG to project")
+                 .checkedBy(checkPngParam);
+    falloff_ = p.addFloat("falloff", 0, 0, 1,
+                          "spotlight falloff: the slide fades over this part of the cone, 0 = off");
+    q_test_ = p.addBool("fix.q_test", true, "no light where q <= 0, i.e. behind the projector");
+    behind_ =
+        p.addChoice("fix.behind", {"off", "skip", "clip"}, "skip",
+                    "geometry behind the projector: skip whole objects, or clip at its plane");
+    inset_ = p.addBool("inset", true, "show the slide in a corner");
   }
 
   void init() override {
@@ -86,8 +86,7 @@ class ProjectiveTexture final : public Lesson {
   }
 
   void render(Frame& f) override {
-    Params& p = f.params;
-    loadSlide(p.at("projector.image").s());
+    loadSlide(image_());
     // The projector is the light: its frustum takes the slide's aspect, so nothing stretches.
     const LightFrustum frustum =
         f.light.frustum(static_cast<float>(slide_.width()) / static_cast<float>(slide_.height()));
@@ -96,11 +95,8 @@ class ProjectiveTexture final : public Lesson {
     const glm::vec3 axis = f.light.direction;
     const glm::vec4 projector_plane{axis, -glm::dot(axis, f.light.position)};
 
-    f.bindTarget();
     const float grey = f.mode == "visibility" ? 0.0f : 0.13f;  // visibility: 0, not counted
-    glClearColor(grey, grey, grey * 1.2f, 1.0f);
-    glClearStencil(0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    f.clearTarget(glm::vec3(grey, grey, grey * 1.2f));
     if (f.mode == "slide") {
       f.drawImageInset(slide_, /*fullscreen=*/true);
       return;
@@ -112,8 +108,8 @@ class ProjectiveTexture final : public Lesson {
     program_.set("uTextureMatrix", shadowTextureMatrix(projection, f.light.view));  // B P V
     program_.set("uProjectorPlane", projector_plane);
     program_.set("uMode", mode);
-    program_.set("uQTest", p.at("fix.q_test").b() ? 1 : 0);
-    program_.set("uFalloff", p.at("falloff").f());
+    program_.set("uQTest", q_test_() ? 1 : 0);
+    program_.set("uFalloff", falloff_());
     program_.set("uHalfAngle", glm::radians(0.5f * frustum.fov));
     program_.set("uExtent", frustum.extent);
     program_.set("uAxis", axis);
@@ -127,7 +123,7 @@ class ProjectiveTexture final : public Lesson {
     }
     if (mode == 2) return;
     projectorPass(f, projector_plane);
-    if (mode == 0 && p.at("inset").b()) f.drawImageInset(slide_);
+    if (mode == 0 && inset_()) f.drawImageInset(slide_);
   }
 
   void panel(Frame& f) override {
@@ -153,7 +149,7 @@ class ProjectiveTexture final : public Lesson {
   // "simply avoid drawing geometry behind the light" (skip), or a clip plane (clip).
   void projectorPass(Frame& f, const glm::vec4& projector_plane) {
     auto timing = f.measure.pass("projector");
-    const std::string& behind = f.params.at("fix.behind").choice();
+    const std::string& behind = behind_.name();
     PassState add;
     add.blend = true;
     add.blend_dst = GL_ONE;  // the projector's light adds to the ambient
@@ -221,6 +217,10 @@ class ProjectiveTexture final : public Lesson {
   Program program_;
   Texture slide_;
   std::string loaded_;
+  StringParam image_;
+  FloatParam falloff_;
+  BoolParam q_test_, inset_;
+  ChoiceParam<> behind_;
   long long skipped_ = 0;
 };
 

@@ -28,8 +28,9 @@ class ShadowMapBasic final : public Lesson {
   }
 
   void declare(Params& p) override {
-    ShadowMap::declare(p);  // shadow.size/height/format/filter/fit/cache, inset
-    p.addFloat("dimming", 0.4f, 0.0f, 1.0f, "light left in shadow: dimming + (1-dimming)*shade");
+    map_.declare(p);  // shadow.size/height/format/filter/fit/cache, inset
+    dimming_ = p.addFloat("dimming", 0.4f, 0.0f, 1.0f,
+                          "light left in shadow: dimming + (1-dimming)*shade");
   }
 
   void init() override {
@@ -45,13 +46,7 @@ class ShadowMapBasic final : public Lesson {
   void render(Frame& f) override {
     // Pass 1: depth from the light, only when something it depends on changed (a static
     // frame renders no map). Only casters inside the light frustum are drawn into it.
-    if (map_.prepare(f)) {
-      auto timing = f.measure.pass("shadow");
-      map_.beginRender();
-      const glm::mat4 light_view_projection = map_.lightViewProjection();  // P_light * V_light
-      depth_program_.set("uLightViewProjection", light_view_projection);
-      f.drawObjects(depth_program_, Objects::Casters, &light_view_projection);
-    }
+    if (map_.prepare(f)) map_.renderCasters(f, depth_program_);  // P_light * V_light * M * p
     if (map_.drawDepthView(f)) return;  // Kilgard's second view: the depth map itself
 
     // Pass 2 from the eye (or, for Kilgard's first view, from the light): each fragment
@@ -62,9 +57,7 @@ class ShadowMapBasic final : public Lesson {
     map_.texture().bind(1);  // the same texture read raw, for the debug views
     raw_sampler_.bind(1);
     const bool from_light = f.mode == "light_view";
-    std::vector<std::string> defines = {"MODE " + std::to_string(modeIndex(f.mode))};
-    if (map_.off()) defines.push_back("NO_SHADOW");
-    const Program& e = eye_programs_.get(defines);
+    const Program& e = eye_programs_.get({f.viewDefines(), define("SHADOW_OFF", map_.off())});
     e.set("uViewProjection", from_light ? map_.lightViewProjection() : f.projection * f.view);
     e.set("uShadowMatrix", biasMatrix() * map_.lightProjection() * map_.lightView());
     e.set("uShadowMap", 0);
@@ -72,7 +65,7 @@ class ShadowMapBasic final : public Lesson {
     e.set("uLightNear", map_.frustum().near);
     e.set("uLightFar", map_.frustum().far);
     e.set("uLightPerspective", map_.frustum().directional ? 0 : 1);
-    f.setLightingUniforms(e, f.params.at("dimming").f());
+    f.setLightingUniforms(e, dimming_());
     if (from_light) e.set("uEye", f.light.position);
     f.drawObjects(e, Objects::All);
     Sampler::unbind(1);
@@ -84,21 +77,14 @@ class ShadowMapBasic final : public Lesson {
     json.value("light_far_used", map_.frustum().far);
   }
 
-  void panel(Frame& f) override {
+  void panel(Frame&) override {
     ImGui::Text("light near %.3f  far %.3f%s", map_.frustum().near, map_.frustum().far,
-                f.params.at("shadow.fit").b() ? " (fitted to casters)" : "");
+                map_.fitted() ? " (fitted to casters)" : "");
   }
 
  private:
-  static int modeIndex(const std::string& mode) {
-    if (mode == "visibility") return 1;
-    if (mode == "projected_depth") return 2;
-    if (mode == "light_distance") return 3;
-    if (mode == "compare") return 4;
-    return 0;  // shaded, light_view
-  }
-
   ShadowMap map_;
+  FloatParam dimming_;
   Program depth_program_;
   ProgramVariants eye_programs_;
   Sampler raw_sampler_;

@@ -9,11 +9,8 @@ in vec4 vShadowCoord;
 uniform sampler2DShadow uShadowMap;  // compare mode on
 uniform sampler2D uShadowDepth;      // the same texture, read raw for the debug views
 uniform vec3 uColor;
-// Compiled per view (main.cpp), so the shaded frame runs only the shading:
-//   MODE 0 shaded, 1 visibility, 2 projected depth A, 3 light distance B, 4 compare
-#ifndef MODE
-#define MODE 0
-#endif
+// Compiled per view (VIEW, from main.cpp) and SHADOW_OFF, so the shaded frame runs only the
+// shading: VIEW_PROJECTED_DEPTH shows A, VIEW_LIGHT_DISTANCE B, VIEW_COMPARE both.
 uniform float uLightNear;
 uniform float uLightFar;
 uniform int uLightPerspective;
@@ -37,14 +34,14 @@ float toDistance(float depth) {
 
 void main() {
   vec3 n = normalize(vNormal);
-#ifdef NO_SHADOW
+#if SHADOW_OFF
   float shade = 1.0;  // shadow.off: the baseline, no lookup at all
 #else
   float shade = shadowTerm();
 #endif
-#if MODE == 0
+#if VIEW == VIEW_SHADED || VIEW == VIEW_LIGHT_VIEW
   outColor = vec4(shadeSurface(uColor, vWorld, n, shade), 1.0);
-#elif MODE == 1
+#elif VIEW == VIEW_VISIBILITY
   outColor = vec4(vec3(shade), 1.0);
 #else
   vec3 c = vShadowCoord.xyz / max(vShadowCoord.w, 1e-6);
@@ -55,9 +52,9 @@ void main() {
   if (!inside) {
     outColor = vec4(vec3(0.25), 1.0);
   } else {
-#if MODE == 2
+#if VIEW == VIEW_PROJECTED_DEPTH
     outColor = vec4(vec3(a), 1.0);
-#elif MODE == 3
+#elif VIEW == VIEW_LIGHT_DISTANCE
     outColor = vec4(vec3(b), 1.0);
 #else
     // Kilgard's comparison: green where A and B agree (lit), the plain surface where B > A.

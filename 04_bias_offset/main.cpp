@@ -24,6 +24,17 @@
 
 namespace shadows {
 
+// bias.mode's choices in the order of enum Bias, each with the panel's one-line hint.
+enum class Bias { None, ConstantOnly, PolygonOffset, ClipTranslate, Gradient, BackFaces, Normal };
+constexpr std::pair<const char*, const char*> kBiasModes[] = {
+    {"none", "no bias: lesson 03"},
+    {"constant_only", "glPolygonOffset(0, units): no slope"},
+    {"polygon_offset", "glPolygonOffset(factor, units) while drawing the map"},
+    {"clip_translate", "clip z + t before the divide: t/2w, no slope"},
+    {"gradient", "map neighbours' slope x factor + units/1000 light-space"},
+    {"back_faces", "back faces only, + glPolygonOffset(factor, units)"},
+    {"normal_offset", "lookup lifted factor texels along the normal, + units"}};
+
 class BiasOffset final : public Lesson {
  public:
   std::string title() const override { return "Bias: acne against peter panning"; }
@@ -34,24 +45,27 @@ class BiasOffset final : public Lesson {
   std::vector<std::string> debugViews() const override { return {"bias_margin", "light_depth"}; }
 
   void declare(Params& p) override {
-    ShadowMap::declare(p);
+    map_.declare(p);
     // Lesson 03's fit on by default: a light moved past the preset's far plane would leave
     // casters out of the map, a leak no bias can fix.
     p.setDefaultFloat(p.at("shadow.fit"), 1.0);
-    p.addFloat("dimming", 0.4f, 0.0f, 1.0f, "light left in shadow: dimming + (1-dimming)*shade");
-    p.addChoice("bias.mode",
-                {"none", "constant_only", "polygon_offset", "clip_translate", "gradient",
-                 "back_faces", "normal_offset"},
-                "back_faces", "where the bias goes (see the lesson README)", kDirtyShadowMap);
-    p.addFloat("bias.factor", 1.1f, 0.0f, 20.0f,
-               "slope scale: glPolygonOffset factor, gradient scale, normal offset in texels",
-               kDirtyShadowMap);
-    p.addFloat("bias.units", 4.0f, 0.0f, 1e7f,
-               "constant: glPolygonOffset units (depth steps); gradient: 1/1000 world units",
-               kDirtyShadowMap)
-        .logarithmic = true;
-    p.addFloat("bias.clamp", 0.25f, 0.0f, 10.0f,
-               "gradient: largest slope bias, world units along the light's axis");
+    dimming_ = p.addFloat("dimming", 0.4f, 0.0f, 1.0f,
+                          "light left in shadow: dimming + (1-dimming)*shade");
+    std::vector<std::string> modes;
+    for (const auto& [name, hint] : kBiasModes) modes.push_back(name);
+    mode_ = p.addChoice("bias.mode", modes, "back_faces",
+                        "where the bias goes (see the lesson README)", kDirtyShadowMap);
+    factor_ = p.addFloat("bias.factor", 1.1f, 0.0f, 20.0f,
+                         "slope scale: glPolygonOffset factor, gradient scale, normal offset in "
+                         "texels",
+                         kDirtyShadowMap);
+    units_ = p.addFloat("bias.units", 4.0f, 0.0f, 1e7f,
+                        "constant: glPolygonOffset units (depth steps); gradient: 1/1000 world "
+                        "units",
+                        kDirtyShadowMap)
+                 .logScale();
+    clamp_ = p.addFloat("bias.clamp", 0.25f, 0.0f, 10.0f,
+                        "gradient: largest slope bias, world units along the light's axis");
   }
 
   void init() override {
@@ -64,26 +78,21 @@ class BiasOffset final : public Lesson {
   }
 
   void render(Frame& f) override {
-    const std::string mode = f.params.at("bias.mode").choice();
-    const float factor = f.params.at("bias.factor").f(), units = f.params.at("bias.units").f();
+    const Bias mode = mode_();
+    const float factor = factor_(), units = units_();
     if (map_.prepare(f)) {
-      auto timing = f.measure.pass("shadow");
-      map_.beginRender();
       PassState state;
-      if (mode == "back_faces") {  // 003 slide 70: the far side of each caster goes in the map
+      if (mode == Bias::BackFaces) {  // 003 slide 70: the far side of each caster goes in the map
         state = ShadowMap::backFacesBias(factor, units);
-      } else if (mode == "constant_only" || mode == "polygon_offset" || mode == "normal_offset") {
+      } else if (mode == Bias::ConstantOnly || mode == Bias::PolygonOffset ||
+                 mode == Bias::Normal) {
         // Window-space offsets, applied by the rasterizer to every depth it writes (000).
         state.polygon_offset = true;
-        state.offset_factor = mode == "polygon_offset" ? factor : 0.0f;
+        state.offset_factor = mode == Bias::PolygonOffset ? factor : 0.0f;
         state.offset_units = units;
       }
-      state.apply();
-      depth_program_.set("uClipOffset", mode == "clip_translate" ? clipOffset(f, units) : 0.0f);
-      const glm::mat4 light_view_projection = map_.lightViewProjection();
-      depth_program_.set("uLightViewProjection", light_view_projection);
-      f.drawObjects(depth_program_, Objects::Casters, &light_view_projection);
-      PassState{}.apply();
+      depth_program_.set("uClipOffset", mode == Bias::ClipTranslate ? clipOffset(units) : 0.0f);
+      map_.renderCasters(f, depth_program_, state);
     }
     if (map_.drawDepthView(f)) return;
 
@@ -92,22 +101,18 @@ class BiasOffset final : public Lesson {
     map_.texture().bind(0);  // sampler2DShadow
     map_.texture().bind(1);  // raw, through raw_sampler_
     raw_sampler_.bind(1);
-    const Program& e = eyeProgram(mode == "gradient"        ? 1
-                                  : mode == "normal_offset" ? 2
-                                                            : 0,
-                                  f.mode == "visibility"    ? 1
-                                  : f.mode == "bias_margin" ? 2
-                                                            : 0,
-                                  map_.off());
+    // scene.frag compiled for this bias mode, view and shadow.off: a frame runs only its code.
+    const Program& e =
+        eye_programs_.get({mode_.defines(), f.viewDefines(), define("SHADOW_OFF", map_.off())});
     e.set("uViewProjection", f.projection * f.view);
     e.set("uShadowMap", 0);
     e.set("uShadowDepth", 1);
     e.set("uFactor", factor);
     e.set("uUnits", units * 1e-3f);  // gradient: the light-space constant, in world units
-    e.set("uClamp", f.params.at("bias.clamp").f());
-    e.set("uDepthStep", depthStep(f));
+    e.set("uClamp", clamp_());
+    e.set("uDepthStep", depthStep());
     setReceiverUniforms(e, f);
-    f.setLightingUniforms(e, f.params.at("dimming").f());
+    f.setLightingUniforms(e, dimming_());
     f.drawObjects(e, Objects::All);
     Sampler::unbind(1);
     if (f.mode != "visibility") map_.drawInset(f);
@@ -120,7 +125,7 @@ class BiasOffset final : public Lesson {
     if (ImGui::Button("001: (2.0, 4.0)")) setOffset(p, 2.0f, 4.0f);
     ImGui::SameLine();
     if (ImGui::Button("no bias")) setOffset(p, 0.0f, 0.0f);
-    ImGui::TextDisabled("%s", modeHint(p.at("bias.mode").choice()));
+    ImGui::TextDisabled("%s", kBiasModes[static_cast<int>(mode_())].second);
     // The two failures, named, with their numbers from the truth.
     const ErrorState& error = f.runner.lastError();
     if (error.valid) {
@@ -130,8 +135,8 @@ class BiasOffset final : public Lesson {
       ImGui::Text("peter panning (false lit)   %7.3f%%  %s", leak,
                   leak > 1.0 ? "<- less bias" : "ok");
     }
-    ImGui::TextDisabled("units %.4g x depth step %.3g = %.3g", p.at("bias.units").f(), depthStep(f),
-                        p.at("bias.units").f() * depthStep(f));
+    ImGui::TextDisabled("units %.4g x depth step %.3g = %.3g", units_(), depthStep(),
+                        units_() * depthStep());
   }
 
   void report(JsonWriter& json) const override {
@@ -145,35 +150,16 @@ class BiasOffset final : public Lesson {
   }
 
  private:
-  static const char* modeHint(const std::string& mode) {
-    if (mode == "none") return "no bias: lesson 03";
-    if (mode == "constant_only") return "glPolygonOffset(0, units): no slope";
-    if (mode == "polygon_offset") return "glPolygonOffset(factor, units) while drawing the map";
-    if (mode == "clip_translate") return "clip z + t before the divide: t/2w, no slope";
-    if (mode == "gradient") return "map neighbours' slope x factor + units/1000 light-space";
-    if (mode == "back_faces") return "back faces only, + glPolygonOffset(factor, units)";
-    return "lookup lifted factor texels along the normal, + units";
-  }
-
-  // scene.frag compiled for one receiver bias and one view (and without the lookup for
-  // shadow.off), once, when a setting first asks for it: a frame runs only its own code.
-  const Program& eyeProgram(int receiver, int view, bool off) {
-    std::vector<std::string> defines = {"RECEIVER " + std::to_string(receiver),
-                                        "VIEW " + std::to_string(view)};
-    if (off) defines.push_back("NO_SHADOW");
-    return eye_programs_.get(defines);
-  }
-
-  static void setOffset(Params& p, float factor, float units) {
-    p.setFloat(p.at("bias.factor"), factor);
-    p.setFloat(p.at("bias.units"), units);
+  void setOffset(Params& p, float factor, float units) {
+    p.setFloat(factor_.param(), factor);
+    p.setFloat(units_.param(), units);
   }
 
   // One step of the map's depth format: what glPolygonOffset's `units` multiplies. For 32-bit
   // float it depends on the depth itself; 2^-24 is its size just below 1.
-  float depthStep(const Frame& f) {
-    const std::string& format = f.params.at("shadow.format").choice();
-    last_step_ = format == "16" ? 1.0f / 65535.0f : format == "24" ? 1.0f / 16777215.0f : 0x1p-24f;
+  float depthStep() {
+    const int bits = map_.depthBits();
+    last_step_ = bits == 16 ? 1.0f / 65535.0f : bits == 24 ? 1.0f / 16777215.0f : 0x1p-24f;
     return last_step_;
   }
 
@@ -181,10 +167,10 @@ class BiasOffset final : public Lesson {
   // glPolygonOffset(0, units). Clip z moved by t is window depth moved by t / 2w, so at
   // distance w the map gets units * near / w steps: less and less bias away from the light,
   // and none for the slope. An orthographic light has w = 1: a constant, slope still missing.
-  float clipOffset(const Frame& f, float units) {
+  float clipOffset(float units) {
     const LightFrustum& fr = map_.frustum();
     const float w_near = fr.directional ? 1.0f : std::max(fr.near, 1e-3f);
-    last_clip_offset_ = 2.0f * units * depthStep(f) * w_near;
+    last_clip_offset_ = 2.0f * units * depthStep() * w_near;
     last_clip_near_ = units;
     last_clip_far_ = fr.directional ? units : units * w_near / std::max(fr.far, w_near);
     return last_clip_offset_;
@@ -202,8 +188,10 @@ class BiasOffset final : public Lesson {
 
   ShadowMap map_;
   Program depth_program_;
-  ProgramVariants eye_programs_;  // scene.frag by variant (eyeProgram)
+  ProgramVariants eye_programs_;  // scene.frag by variant
   Sampler raw_sampler_;
+  FloatParam dimming_, factor_, units_, clamp_;
+  ChoiceParam<Bias> mode_;
   float last_step_ = 0, last_clip_offset_ = 0, last_clip_near_ = 0, last_clip_far_ = 0;
   float last_texel_world_ = 0;
 };

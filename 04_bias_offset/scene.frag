@@ -9,15 +9,9 @@ in vec3 vNormal;
 uniform sampler2DShadow uShadowMap;  // compare mode on: 1 where B <= A
 uniform sampler2D uShadowDepth;      // the same texture read raw, for the gradient and the views
 uniform vec3 uColor;
-// Compiled per setting (main.cpp), so a frame runs only its own bias and view:
-//   RECEIVER  0 nothing (the bias is in the map), 1 gradient (002), 2 normal offset
-//   VIEW      0 shaded, 1 visibility, 2 bias margin
-#ifndef RECEIVER
-#define RECEIVER 0
-#endif
-#ifndef VIEW
-#define VIEW 0
-#endif
+// Compiled per BIAS_MODE, VIEW and SHADOW_OFF (main.cpp), so a frame runs only its own bias
+// and view. Only gradient (002) and normal offset bias the receiver here; the other modes
+// biased the map in pass 1.
 uniform float uFactor;     // bias.factor: gradient scale, or normal offset in texels
 uniform float uUnits;      // bias.units: the gradient's light-space constant (world units)
 uniform float uClamp;      // bias.clamp: the gradient's clamp (world units along the light z)
@@ -27,7 +21,7 @@ out vec4 outColor;
 // The shadow term and the margin A - B the compare saw (negative: shadowed).
 float shadowTerm(vec3 n, out float margin) {
   vec3 p = vWorld;
-#if RECEIVER == 2
+#if BIAS_MODE == BIAS_MODE_NORMAL_OFFSET
   p = normalOffsetPoint(p, n, directionToLight(vWorld), uFactor);
 #endif
   vec4 c = uShadowMatrix * vec4(p, 1.0);
@@ -35,12 +29,12 @@ float shadowTerm(vec3 n, out float margin) {
   if (c.w <= 0.0) return 1.0;  // behind a spot light: outside its frustum
   c.xyz /= c.w;
   c.z = min(c.z, 1.0);  // beyond the far plane: every depth format clamps B to 1
-#if RECEIVER == 1
+#if BIAS_MODE == BIAS_MODE_GRADIENT
   float a = gradientBiasedDepth(uShadowDepth, c.xy, p, uFactor, uUnits, uClamp);
   margin = a - c.z;
   return c.z <= a ? 1.0 : 0.0;
 #else
-#if VIEW == 2
+#if VIEW == VIEW_BIAS_MARGIN
   margin = texture(uShadowDepth, c.xy).r - c.z;
 #endif
   return texture(uShadowMap, c.xyz);
@@ -50,14 +44,14 @@ float shadowTerm(vec3 n, out float margin) {
 void main() {
   vec3 n = geometricNormal(vWorld);
   float margin = 0.0;
-#ifdef NO_SHADOW
+#if SHADOW_OFF
   float shade = 1.0;  // shadow.off: the baseline, no lookup at all
 #else
   float shade = shadowTerm(n, margin);
 #endif
-#if VIEW == 0
+#if VIEW == VIEW_SHADED
   outColor = vec4(shadeSurface(uColor, vWorld, normalize(vNormal), shade), 1.0);
-#elif VIEW == 1
+#elif VIEW == VIEW_VISIBILITY
   outColor = vec4(vec3(shade), 1.0);
 #else
   {

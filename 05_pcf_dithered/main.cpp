@@ -36,19 +36,23 @@ class PcfDithered final : public Lesson {
   std::vector<std::string> debugViews() const override { return {"taps", "light_depth"}; }
 
   void declare(Params& p) override {
-    ShadowMap::declare(p);
+    map_.declare(p);
     p.setDefaultFloat(p.at("shadow.fit"), 1.0);  // lesson 03's fit, as in lesson 04
-    p.addFloat("dimming", 0.4f, 0.0f, 1.0f, "diffuse left in shadow: dimming + (1-dimming)*shade");
-    p.addChoice("pcf.mode", {"none", "hw2x2", "grid", "dithered", "poisson"}, "dithered",
-                "how the shadow term is filtered");
-    p.addFloat("pcf.radius", 2.0f, 0.0f, 16.0f, "kernel half-width in texels (001's swidth x 2)");
-    p.addInt("pcf.taps", 16, 1, 64, "grid: up to N x N of this; poisson: this many");
-    p.addBool("pcf.early_out", true, "stop after 4 probe taps that agree");
-    p.addBool("pcf.count", true, "count taps per fragment (its atomics cost the eye pass ~10%)");
+    dimming_ = p.addFloat("dimming", 0.4f, 0.0f, 1.0f,
+                          "diffuse left in shadow: dimming + (1-dimming)*shade");
+    mode_ = p.addChoice("pcf.mode", pcf::kModeNames, "dithered", "how the shadow term is filtered");
+    radius_ = p.addFloat("pcf.radius", 2.0f, 0.0f, 16.0f,
+                         "kernel half-width in texels (001's swidth x 2)");
+    taps_ = p.addInt("pcf.taps", 16, 1, 64, "grid: up to N x N of this; poisson: this many");
+    early_out_ = p.addBool("pcf.early_out", true, "stop after 4 probe taps that agree");
+    count_ = p.addBool("pcf.count", true,
+                       "count taps per fragment (its atomics cost the eye pass ~10%)");
     // Lesson 04's default bias: back faces into the map, plus glPolygonOffset(factor, units).
-    p.addFloat("bias.factor", 1.1f, 0.0f, 20.0f, "glPolygonOffset factor", kDirtyShadowMap);
-    p.addFloat("bias.units", 4.0f, 0.0f, 1e7f, "glPolygonOffset units", kDirtyShadowMap)
-        .logarithmic = true;
+    factor_ =
+        p.addFloat("bias.factor", 1.1f, 0.0f, 20.0f, "glPolygonOffset factor", kDirtyShadowMap);
+    units_ = p.addFloat("bias.units", 4.0f, 0.0f, 1e7f, "glPolygonOffset units", kDirtyShadowMap)
+                 .logScale();
+    linear_filter_ = p.at("shadow.filter");
   }
 
   void init() override {
@@ -62,28 +66,21 @@ class PcfDithered final : public Lesson {
     counters_ = Buffer(GL_SHADER_STORAGE_BUFFER, sizeof(counts_), nullptr, GL_DYNAMIC_READ);
   }
   void render(Frame& f) override {
-    Params& p = f.params;
-    if (map_.prepare(f)) {  // lesson 04's default bias
-      auto timing = f.measure.pass("shadow");
-      map_.beginRender();
-      ShadowMap::backFacesBias(p.at("bias.factor").f(), p.at("bias.units").f()).apply();
-      const glm::mat4 light_view_projection = map_.lightViewProjection();
-      depth_program_.set("uLightViewProjection", light_view_projection);
-      f.drawObjects(depth_program_, Objects::Casters, &light_view_projection);
-      PassState{}.apply();
-    }
-    const std::string mode = p.at("pcf.mode").choice();
-    const float radius = p.at("pcf.radius").f();
-    const int grid = pcf::gridSide(p.at("pcf.taps").i());
+    // Lesson 04's default bias: back faces into the map, plus glPolygonOffset.
+    if (map_.prepare(f))
+      map_.renderCasters(f, depth_program_, ShadowMap::backFacesBias(factor_(), units_()));
+    const pcf::Mode mode = mode_();
+    const float radius = radius_();
+    const int grid = pcf::gridSide(taps_());
     // The area light the truth uses: the one whose penumbra this kernel's blur matches.
-    kernel_texels_ = mode == "none"                ? 0.0f
-                     : mode == "hw2x2"             ? 0.5f  // a tent over 2 texels
-                     : mode == "grid" && grid == 1 ? 0.0f
-                                                   : radius;
+    kernel_texels_ = mode == pcf::Mode::None                ? 0.0f
+                     : mode == pcf::Mode::Hw2x2             ? 0.5f  // a tent over 2 texels
+                     : mode == pcf::Mode::Grid && grid == 1 ? 0.0f
+                                                            : radius;
     f.truth_area_radius = matchAreaLight(f, kernel_texels_);
     if (map_.drawDepthView(f)) return;
 
-    const bool counting = p.at("pcf.count").b() && f.measure.enabled();
+    const bool counting = count_() && f.measure.enabled();
     const GLuint zero[4] = {0, 0, 0, 0};
     counters_.bindBase(0);
     glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(zero), zero);
@@ -91,32 +88,23 @@ class PcfDithered final : public Lesson {
       auto timing = f.measure.pass("eye");
       f.clearTarget();
       map_.texture().bind(0);
-      const bool linear = mode == "hw2x2" || p.at("shadow.filter").is("linear");
+      const bool linear = mode == pcf::Mode::Hw2x2 || linear_filter_.name() == "linear";
       (linear ? linear_ : nearest_).bind(0);
-      const pcf::Mode kernel = mode == "none"       ? pcf::Mode::None
-                               : mode == "hw2x2"    ? pcf::Mode::Hw2x2
-                               : mode == "grid"     ? pcf::Mode::Grid
-                               : mode == "dithered" ? pcf::Mode::Dithered
-                                                    : pcf::Mode::Poisson;
-      const Program& e = eye_programs_.get(
-          {"PCF_MODE " + std::to_string(static_cast<int>(kernel)),
-           std::string("VIEW ") + (f.mode == "visibility" ? "1"
-                                   : f.mode == "taps"     ? "2"
-                                                          : "0"),
-           std::string("EARLY_OUT ") + (p.at("pcf.early_out").b() ? "1" : "0"),
-           std::string("COUNT ") + (counting ? "1" : "0"), map_.off() ? "NO_SHADOW" : "SHADOW"});
+      const Program& e =
+          eye_programs_.get({mode_.defines(), early_out_.defines(), define("PCF_COUNT", counting),
+                             f.viewDefines(), define("SHADOW_OFF", map_.off())});
       e.set("uViewProjection", f.projection * f.view);
       e.set("uShadowMatrix", map_.textureMatrix());  // B * P_light * V_light
       e.set("uShadowMap", 0);
       e.set("uGridSide", grid);
       // The offsets the unit tests check are the ones the shader takes (pcf_math.hpp).
-      const std::vector<glm::vec2> taps = pcf::tapOffsets(kernel, p.at("pcf.taps").i(), radius);
+      const std::vector<glm::vec2> taps = pcf::tapOffsets(mode, taps_(), radius);
       glProgramUniform2fv(e.id(), e.location("uTaps"), static_cast<GLsizei>(taps.size()),
                           glm::value_ptr(taps[0]));
       e.set("uPoissonTaps", static_cast<int>(taps.size()));
       e.set("uTexel", glm::vec2(1.0f / static_cast<float>(map_.width()),
                                 1.0f / static_cast<float>(map_.height())));
-      f.setLightingUniforms(e, p.at("dimming").f());
+      f.setLightingUniforms(e, dimming_());
       f.drawObjects(e, Objects::All);
       Sampler::unbind(0);
     }
@@ -135,8 +123,8 @@ class PcfDithered final : public Lesson {
     Params& p = f.params;
     auto preset = [&](const char* label, const char* mode, int taps) {
       if (ImGui::Button(label)) {
-        p.setChoice(p.at("pcf.mode"), mode);
-        p.setFloat(p.at("pcf.taps"), taps);
+        p.setChoice(mode_.param(), mode);
+        p.setFloat(taps_.param(), taps);
       }
     };
     preset("64 taps", "grid", 64);
@@ -200,6 +188,11 @@ class PcfDithered final : public Lesson {
   ProgramVariants eye_programs_;
   Sampler nearest_, linear_;
   Buffer counters_;
+  FloatParam dimming_, radius_, factor_, units_;
+  ChoiceParam<pcf::Mode> mode_;
+  ChoiceParam<> linear_filter_;
+  IntParam taps_;
+  BoolParam early_out_, count_;
   GLuint counts_[4] = {0, 0, 0, 0};  // taps, filtered, stopped early, facing away
   float kernel_texels_ = 0, area_radius_ = 0, d_occluder_ = 0, d_receiver_ = 0, texel_world_ = 0;
 };

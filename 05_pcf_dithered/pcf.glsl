@@ -3,14 +3,8 @@
 // The tap offsets are not computed here: pcf_math.hpp (tapOffsets) computes them on the CPU
 // and main.cpp passes them as uTaps, so the unit tests check the very offsets the shader uses.
 uniform sampler2DShadow uShadowMap;
-// Compiled per setting (main.cpp): PCF_MODE 0 none, 1 hw2x2, 2 grid, 3 dithered, 4 poisson;
-// EARLY_OUT 1: stop after 4 probe taps that agree.
-#ifndef PCF_MODE
-#define PCF_MODE 0
-#endif
-#ifndef EARLY_OUT
-#define EARLY_OUT 0
-#endif
+// Compiled per setting (main.cpp): PCF_MODE is pcf.mode (PCF_MODE_NONE .. PCF_MODE_POISSON);
+// PCF_EARLY_OUT 1: stop after 4 probe taps that agree.
 uniform int uGridSide;    // grid: N for N x N taps
 uniform int uPoissonTaps; // poisson: how many of the 64 points
 uniform vec2 uTexel;      // 1 / map size
@@ -30,7 +24,7 @@ float tap(vec3 c, vec2 offsetTexels) {
 float pcfGrid(vec3 c) {
   int n = uGridSide, last = n - 1;
   float sum = 0.0;
-  bool probed = EARLY_OUT == 1 && n > 2;
+  bool probed = PCF_EARLY_OUT == 1 && n > 2;
   if (probed) {
     // The four corners first: if they agree, the neighbourhood is fully lit or fully shadowed
     // (unless something smaller than the kernel hides between them) and the rest is skipped.
@@ -66,7 +60,7 @@ float pcfPoisson(vec3 c) {
   int n = uPoissonTaps;
   float sum = 0.0;
   int first = 0;
-  if (EARLY_OUT == 1 && n > 4) {
+  if (PCF_EARLY_OUT == 1 && n > 4) {
     for (int k = 0; k < 4; ++k) sum += tap(c, uTaps[k]);
     if (sum == 0.0 || sum == 4.0) {
       gStopped = true;
@@ -80,11 +74,11 @@ float pcfPoisson(vec3 c) {
 
 // c: (s, t, r) after the divide by q.
 float percentageCloser(vec3 c) {
-#if PCF_MODE == 2
+#if PCF_MODE == PCF_MODE_GRID
   return pcfGrid(c);
-#elif PCF_MODE == 3
+#elif PCF_MODE == PCF_MODE_DITHERED
   return pcfDithered(c);
-#elif PCF_MODE == 4
+#elif PCF_MODE == PCF_MODE_POISSON
   return pcfPoisson(c);
 #else
   return tap(c, vec2(0.0));  // none (nearest) or hw2x2 (the sampler is LINEAR: 4 texels, weighted)

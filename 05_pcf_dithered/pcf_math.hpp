@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <glm/glm.hpp>
+#include <string>
 #include <vector>
 
 namespace shadows::pcf {
@@ -85,7 +86,10 @@ inline const std::array<glm::vec2, 64>& poissonDisk() {
   return points;
 }
 
+// pcf.mode's choices, in this order (main.cpp declares them from kModeNames; the shader sees
+// PCF_MODE_NONE .. PCF_MODE_POISSON).
 enum class Mode { None, Hw2x2, Grid, Dithered, Poisson };
+inline const std::vector<std::string> kModeNames = {"none", "hw2x2", "grid", "dithered", "poisson"};
 
 // The side N of the grid for a tap budget: the largest N x N that fits, 1 to 8 (64 taps).
 inline int gridSide(int taps) {

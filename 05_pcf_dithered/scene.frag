@@ -10,14 +10,9 @@ in vec3 vWorld;
 in vec3 vNormal;
 in vec4 vShadowCoord;
 uniform vec3 uColor;
-// Compiled per setting (main.cpp): VIEW 0 shaded, 1 visibility, 2 taps per fragment; COUNT 1
-// adds this fragment's work to the counters (atomics cost; compiled out when off).
-#ifndef VIEW
-#define VIEW 0
-#endif
-#ifndef COUNT
-#define COUNT 0
-#endif
+// Compiled per setting (main.cpp): VIEW (shaded, visibility, taps per fragment), SHADOW_OFF,
+// and PCF_COUNT 1 that adds this fragment's work to the counters (atomics cost; compiled out
+// when off).
 out vec4 outColor;
 layout(std430, binding = 0) buffer Counters {
   uint taps;         // shadow-map lookups
@@ -30,7 +25,7 @@ float shadowTerm(vec3 n, vec3 toLight) {
   // Facing away from the light (the geometric normal, as the truth sees it): in its own
   // shadow, whatever the map says. No taps.
   if (dot(n, toLight) <= 0.0) {
-    if (COUNT == 1) atomicAdd(facing_away, 1u);
+    if (PCF_COUNT == 1) atomicAdd(facing_away, 1u);
     return 0.0;
   }
   vec4 c = vShadowCoord;
@@ -38,7 +33,7 @@ float shadowTerm(vec3 n, vec3 toLight) {
   vec3 p = c.xyz / c.w;
   p.z = min(p.z, 1.0);  // beyond the far plane: every depth format clamps B to 1
   float shade = percentageCloser(p);
-  if (COUNT == 1) {
+  if (PCF_COUNT == 1) {
     atomicAdd(taps, uint(gTaps));
     atomicAdd(filtered, 1u);
     if (gStopped) atomicAdd(stopped, 1u);
@@ -48,16 +43,16 @@ float shadowTerm(vec3 n, vec3 toLight) {
 
 void main() {
   vec3 n = normalize(cross(dFdx(vWorld), dFdy(vWorld)));  // geometric, facing the eye
-#ifdef NO_SHADOW
+#if SHADOW_OFF
   float shade = 1.0;  // shadow.off: the baseline, no lookup at all
 #else
   float shade = shadowTerm(n, directionToLight(vWorld));
 #endif
-#if VIEW == 0
+#if VIEW == VIEW_SHADED
   {
     outColor = vec4(shadeSurface(uColor, vWorld, normalize(vNormal), shade), 1.0);
   }
-#elif VIEW == 1
+#elif VIEW == VIEW_VISIBILITY
   {
     outColor = vec4(vec3(shade), 1.0);
   }

@@ -39,7 +39,7 @@ void main() {
 #if PASS == 1
   // "Render scene with light disabled -or- dimmed substantially and specular light color of
   // zero": no texture at all.
-#ifdef NO_SHADOW
+#if SHADOW_OFF
   float lit = 1.0;  // shadow.off, the baseline: this one pass, lit, no texture
 #else
   float lit = 0.0;

@@ -28,12 +28,13 @@ class DualTexture8bit final : public Lesson {
   std::vector<std::string> debugViews() const override { return {"map", "ramp", "difference"}; }
 
   void declare(Params& p) override {
-    DepthReadback::declare(p, /*digits=*/1, /*linearChoice=*/true);
-    p.addBool("ramp.lookup", true,
-              "Tex1 from the 8-bit ramp texture; off: the exact fragment depth");
-    p.addBool("pass.dimmed", true, "pass 1: everything dimmed");
-    p.addBool("pass.lit", true, "pass 2: lit where the alpha test passes");
-    p.addFloat("dimming", 0.4f, 0.0f, 1.0f, "light left in shadow: dimming + (1-dimming)*shade");
+    map_.declare(p, /*linearChoice=*/true);
+    ramp_lookup_ = p.addBool("ramp.lookup", true,
+                             "Tex1 from the 8-bit ramp texture; off: the exact fragment depth");
+    dimmed_ = p.addBool("pass.dimmed", true, "pass 1: everything dimmed");
+    lit_ = p.addBool("pass.lit", true, "pass 2: lit where the alpha test passes");
+    dimming_ = p.addFloat("dimming", 0.4f, 0.0f, 1.0f,
+                          "light left in shadow: dimming + (1-dimming)*shade");
   }
 
   void init() override {
@@ -41,9 +42,9 @@ class DualTexture8bit final : public Lesson {
     const auto vertex = commonShaderDir() / "readback_eye.vert";
     const auto fragment = lessonFile(LESSON_DIR, "dual_texture.frag");
     for (int pass = 0; pass < 3; ++pass) {
-      passes_[pass] = Program(vertex, fragment, {"PASS " + std::to_string(pass)});
+      passes_[pass] = Program(vertex, fragment, {"PASS " + std::to_string(pass), "SHADOW_OFF 0"});
     }
-    passes_[3] = Program(vertex, fragment, {"PASS 1", "NO_SHADOW"});  // shadow.off
+    passes_[3] = Program(vertex, fragment, {"PASS 1", "SHADOW_OFF 1"});  // shadow.off
   }
 
   void render(Frame& f) override {
@@ -58,10 +59,10 @@ class DualTexture8bit final : public Lesson {
     f.clearTarget(f.mode == "visibility" ? glm::vec3(0.0f) : Frame::kSky);
     for (const Program& program : passes_) {
       program.set("uViewProjection", f.projection * f.view);
-      program.set("uRampLookup", f.params.at("ramp.lookup").b() ? 1 : 0);
+      program.set("uRampLookup", ramp_lookup_() ? 1 : 0);
       program.set("uOutput", outputIndex(f.mode));
       map_.bindForLookup(f, program);
-      f.setLightingUniforms(program, f.params.at("dimming").f());
+      f.setLightingUniforms(program, dimming_());
     }
     if (f.mode == "ramp" || f.mode == "difference") {  // one value per pixel, no test
       f.drawObjects(passes_[0], Objects::All);
@@ -71,10 +72,10 @@ class DualTexture8bit final : public Lesson {
     if (f.mode != "visibility") map_.drawInset(f);
   }
 
-  void panel(Frame& f) override {
+  void panel(Frame&) override {
     const LightFrustum& fr = map_.light().frustum();
     ImGui::Text("light near %.3f  far %.3f  (far/near %.0f)%s", fr.near, fr.far, fr.far / fr.near,
-                f.params.at("shadow.fit").b() ? " fitted" : "");
+                map_.light().fitted() ? " fitted" : "");
     ImGui::TextDisabled("one 8-bit step = %.4g world units at the far plane", stepAtFar());
     ImGui::Text("pass 2 lit %lld fragments", lit_fragments_);
   }
@@ -103,12 +104,12 @@ class DualTexture8bit final : public Lesson {
       // Pass 1 lays the depth pass 2 must equal; switched off, it still does, in no colour.
       auto timing = f.measure.pass("pass1");
       PassState dimmed;
-      dimmed.color_write = f.params.at("pass.dimmed").b();
+      dimmed.color_write = dimmed_();
       dimmed.apply();
       f.drawObjects(passes_[1], Objects::All);
     }
     lit_fragments_ = 0;
-    if (!f.params.at("pass.lit").b()) return;
+    if (!lit_()) return;
     auto timing = f.measure.pass("pass2");
     PassState lit;
     lit.depth_func = GL_EQUAL;
@@ -136,6 +137,8 @@ class DualTexture8bit final : public Lesson {
   Program passes_[4];
   SamplesPassedQuery query_;
   long long lit_fragments_ = 0;
+  BoolParam ramp_lookup_, dimmed_, lit_;
+  FloatParam dimming_;
 };
 
 SHADOWS_LESSON(DualTexture8bit);

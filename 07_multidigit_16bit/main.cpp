@@ -29,21 +29,26 @@ class MultiDigit16bit final : public Lesson {
   }
 
   void declare(Params& p) override {
-    DepthReadback::declare(p, /*digits=*/2, /*linearChoice=*/false);
-    p.addBool("pass.dimmed", true, "pass 1: everything dimmed");
-    p.addBool("pass.big", true, "pass 2: lit where the big digits decide (writes stencil 1)");
-    p.addBool("pass.little", true, "pass 3: lit where the little digit decides (stencil != 1)");
-    p.addFloat("dimming", 0.4f, 0.0f, 1.0f, "light left in shadow: dimming + (1-dimming)*shade");
+    map_.declare(p, /*linearChoice=*/false);
+    dimmed_ = p.addBool("pass.dimmed", true, "pass 1: everything dimmed");
+    big_ =
+        p.addBool("pass.big", true, "pass 2: lit where the big digits decide (writes stencil 1)");
+    little_ =
+        p.addBool("pass.little", true, "pass 3: lit where the little digit decides (stencil != 1)");
+    dimming_ = p.addFloat("dimming", 0.4f, 0.0f, 1.0f,
+                          "light left in shadow: dimming + (1-dimming)*shade");
+    inset_ = p.at("inset");
   }
 
   void init() override {
     map_.init();
     const auto vertex = commonShaderDir() / "readback_eye.vert";
     const auto fragment = lessonFile(LESSON_DIR, "multidigit.frag");
-    passes_[0] = Program(vertex, fragment, {"PASS 1"});
-    passes_[1] = Program(vertex, fragment, {"PASS 2"});
-    passes_[2] = Program(vertex, lessonFile(LESSON_DIR, "multidigit_pass3.frag"), {"PASS 3"});
-    passes_[3] = Program(vertex, fragment, {"PASS 1", "NO_SHADOW"});  // shadow.off
+    passes_[0] = Program(vertex, fragment, {"PASS 1", "SHADOW_OFF 0"});
+    passes_[1] = Program(vertex, fragment, {"PASS 2", "SHADOW_OFF 0"});
+    passes_[2] = Program(vertex, lessonFile(LESSON_DIR, "multidigit_pass3.frag"),
+                         {"PASS 3", "SHADOW_OFF 0"});
+    passes_[3] = Program(vertex, fragment, {"PASS 1", "SHADOW_OFF 1"});  // shadow.off
     digits_view_ =
         Program(commonShaderDir() / "fullscreen.vert", lessonFile(LESSON_DIR, "digits_view.frag"));
   }
@@ -63,19 +68,19 @@ class MultiDigit16bit final : public Lesson {
       program.set("uViewProjection", f.projection * f.view);
       program.set("uOutput", output);
       map_.bindForLookup(f, program);
-      f.setLightingUniforms(program, f.params.at("dimming").f());
+      f.setLightingUniforms(program, dimming_());
     }
     drawPasses(f, output == 2);
     // The inset: the little digit, "here is where the information is".
-    if (f.mode != "visibility" && f.params.at("inset").b() && !map_.light().off()) {
+    if (f.mode != "visibility" && inset_() && !map_.light().off()) {
       drawDigits(f, 1, /*inset=*/true);
     }
   }
 
-  void panel(Frame& f) override {
+  void panel(Frame&) override {
     const LightFrustum& fr = map_.light().frustum();
     ImGui::Text("light near %.3f  far %.3f  (far/near %.0f)%s", fr.near, fr.far, fr.far / fr.near,
-                f.params.at("shadow.fit").b() ? " fitted" : "");
+                map_.light().fitted() ? " fitted" : "");
     ImGui::Text("lit by pass 2 %lld, by pass 3 %lld fragments", lit_[0], lit_[1]);
   }
 
@@ -86,7 +91,6 @@ class MultiDigit16bit final : public Lesson {
 
  private:
   void drawPasses(Frame& f, bool additive) {
-    const Params& p = f.params;
     if (map_.light().off()) {  // the baseline: one lit pass, no map, no lookup
       auto timing = f.measure.pass("pass1");
       f.drawObjects(passes_[3], Objects::All);
@@ -96,7 +100,7 @@ class MultiDigit16bit final : public Lesson {
       // Pass 1 lays the depth passes 2 and 3 must equal; switched off, in no colour.
       auto timing = f.measure.pass("pass1");
       PassState dimmed;
-      dimmed.color_write = p.at("pass.dimmed").b();
+      dimmed.color_write = dimmed_();
       dimmed.apply();
       f.drawObjects(passes_[0], Objects::All);
     }
@@ -110,7 +114,7 @@ class MultiDigit16bit final : public Lesson {
       // Off, pass 2 still marks its pixels, so pass 3 alone shows only its own share.
       auto timing = f.measure.pass("pass2");
       PassState big = lit;
-      big.color_write = p.at("pass.big").b();
+      big.color_write = big_();
       big.stencil_func = GL_ALWAYS;
       big.stencil_ref = 1;
       big.stencil_pass = GL_REPLACE;
@@ -118,7 +122,7 @@ class MultiDigit16bit final : public Lesson {
       lit_[0] = countLit(f, passes_[1], 0);
     }
     lit_[1] = 0;
-    if (p.at("pass.little").b()) {
+    if (little_()) {
       auto timing = f.measure.pass("pass3");
       PassState little = lit;
       little.stencil_func = GL_NOTEQUAL;  // passes where 1 != stencil
@@ -150,6 +154,8 @@ class MultiDigit16bit final : public Lesson {
   Program digits_view_;
   SamplesPassedQuery queries_[2];
   long long lit_[2] = {0, 0};
+  BoolParam dimmed_, big_, little_, inset_;
+  FloatParam dimming_;
 };
 
 SHADOWS_LESSON(MultiDigit16bit);

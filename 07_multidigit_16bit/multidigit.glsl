@@ -42,7 +42,7 @@ vec4 passColor(float shade, vec4 passesView) {
 }
 
 void main() {
-#if PASS == 1 && defined(NO_SHADOW)
+#if PASS == 1 && SHADOW_OFF
   outColor = passColor(1.0, vec4(0.15, 0.15, 0.15, 1.0));  // shadow.off: one pass, lit
 #elif PASS == 1
   outColor = passColor(0.0, vec4(0.15, 0.15, 0.15, 1.0));

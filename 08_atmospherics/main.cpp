@@ -35,37 +35,34 @@ class Atmospherics final : public Lesson {
   }
 
   void declare(Params& p) override {
-    ShadowMap::declare(p);
-    p.addInt("air.slices", 64, 1, 256, "slices through the lit air, back to front");
-    p.addFloat("air.density", 0.08f, 0.0f, 1.0f, "dust: light scattered per world unit");
-    p.addBool("air.jitter", true, "move each pixel's sample within its slice: noise, not bands");
-    p.addBool("air.bound", true, "slices only over the depth range and screen area of the cone");
-    p.addBool("air.early_reject", true,
-              "slice fragments behind surfaces fail the depth test before they are shaded");
-    Param& image = p.addString("spot.image", "builtin",
-                               "builtin (a round spot) or the path of a PNG to project");
-    image.check = checkPngParam;  // a missing or broken file is bad input, named
-    p.addFloat("spot.falloff", 0.35f, 0.0f, 1.0f,
-               "builtin spot: the outer part of its radius over which it fades");
-    p.addFloat("dimming", 0.4f, 0.0f, 1.0f, "light left in shadow: dimming + (1-dimming)*shade");
+    map_.declare(p);
+    slices_ = p.addInt("air.slices", 64, 1, 256, "slices through the lit air, back to front");
+    density_ = p.addFloat("air.density", 0.08f, 0.0f, 1.0f, "dust: light scattered per world unit");
+    jitter_ = p.addBool("air.jitter", true,
+                        "move each pixel's sample within its slice: noise, not bands");
+    bound_ = p.addBool("air.bound", true,
+                       "slices only over the depth range and screen area of the cone");
+    early_reject_ =
+        p.addBool("air.early_reject", true,
+                  "slice fragments behind surfaces fail the depth test before they are shaded");
+    // A missing or broken file is bad input, named.
+    image_ = p.addString("spot.image", "builtin",
+                         "builtin (a round spot) or the path of a PNG to project")
+                 .checkedBy(checkPngParam);
+    falloff_ = p.addFloat("spot.falloff", 0.35f, 0.0f, 1.0f,
+                          "builtin spot: the outer part of its radius over which it fades");
+    dimming_ = p.addFloat("dimming", 0.4f, 0.0f, 1.0f,
+                          "light left in shadow: dimming + (1-dimming)*shade");
   }
 
   void init() override {
     const auto common = commonShaderDir();
     depth_ = Program(common / "light_depth.vert", common / "depth_only.frag");
-    // [1]: shadow.off, the baseline, compiled with no shadow lookup.
-    for (int off = 0; off < 2; ++off) {
-      std::vector<std::string> defines;
-      if (off == 1) defines.push_back("NO_SHADOW");
-      room_[off] = Program(lessonFile(LESSON_DIR, "room.vert"), lessonFile(LESSON_DIR, "room.frag"),
-                           defines);
-      for (int early = 0; early < 2; ++early) {
-        std::vector<std::string> slice_defines = defines;
-        slice_defines.push_back("EARLY_REJECT " + std::to_string(early));
-        slices_[off][early] = Program(lessonFile(LESSON_DIR, "slice.vert"),
-                                      lessonFile(LESSON_DIR, "slice.frag"), slice_defines);
-      }
-    }
+    // Compiled per shadow.off (the baseline: no lookup) and air.early_reject, on first use.
+    room_ =
+        ProgramVariants(lessonFile(LESSON_DIR, "room.vert"), lessonFile(LESSON_DIR, "room.frag"));
+    slice_programs_ =
+        ProgramVariants(lessonFile(LESSON_DIR, "slice.vert"), lessonFile(LESSON_DIR, "slice.frag"));
     glGenVertexArrays(1, &empty_vao_);
   }
   ~Atmospherics() override {
@@ -73,22 +70,13 @@ class Atmospherics final : public Lesson {
   }
 
   void render(Frame& f) override {
-    const Params& p = f.params;
-    loadSpot(p.at("spot.image").s(), p.at("spot.falloff").f());
+    loadSpot(image_(), falloff_());
     // 1. The shadow map, lesson 04's default bias (back faces + glPolygonOffset(1.1, 4)).
-    if (map_.prepare(f)) {
-      auto timing = f.measure.pass("shadow");
-      map_.beginRender();
-      ShadowMap::backFacesBias(1.1f, 4.0f).apply();
-      const glm::mat4 light_view_projection = map_.lightViewProjection();
-      depth_.set("uLightViewProjection", light_view_projection);
-      f.drawObjects(depth_, Objects::Casters, &light_view_projection);
-      PassState{}.apply();
-    }
+    if (map_.prepare(f)) map_.renderCasters(f, depth_, ShadowMap::backFacesBias(1.1f, 4.0f));
     if (map_.drawDepthView(f)) return;
 
     const glm::mat4 cone = coneOfLight(f);
-    f.medium = AirMedium{p.at("air.density").f(), f.light.position, cone, &spot_, 64};
+    f.medium = AirMedium{density_(), f.light.position, cone, &spot_, 64};
 
     // 2 and 3. The surfaces, lit through the spot texture and the shadow map.
     {
@@ -96,13 +84,13 @@ class Atmospherics final : public Lesson {
       f.clearTarget(f.mode == "air" || f.mode == "visibility" ? glm::vec3(0.0f)
                                                               : glm::vec3(0.02f, 0.02f, 0.03f));
       bindLightTextures();
-      const Program& room = room_[map_.off() ? 1 : 0];
+      const Program& room = room_.get({define("SHADOW_OFF", map_.off())});
       room.set("uViewProjection", f.projection * f.view);
       room.set("uShadowMatrix", map_.textureMatrix());
       room.set("uSpotMatrix", biasMatrix() * cone);
       room.set("uLightPos", f.light.position);
       room.set("uEye", f.eye);
-      room.set("uDimming", p.at("dimming").f());
+      room.set("uDimming", dimming_());
       room.set("uOutput", f.mode == "visibility" ? 1
                           : f.mode == "spot"     ? 2
                           : f.mode == "air"      ? 3
@@ -116,9 +104,9 @@ class Atmospherics final : public Lesson {
     if (f.mode == "shaded" || f.mode == "surfaces") map_.drawInset(f);
   }
 
-  void panel(Frame& f) override {
+  void panel(Frame&) override {
     ImGui::Text("slices %d over view depth %.2f .. %.2f (%s)", slices_drawn_, near_, far_,
-                f.params.at("air.bound").b() ? "the cone's" : "the whole view");
+                bound_() ? "the cone's" : "the whole view");
     ImGui::Text("slice fragments passed %lld", passed_);
   }
 
@@ -167,7 +155,7 @@ class Atmospherics final : public Lesson {
   // slice, the screen rectangle around the polygon its plane cuts out of the frustum; or the
   // whole view's depth and the whole screen.
   void sliceBounds(const Frame& f, const glm::mat4& cone, int count) {
-    const bool bound = f.params.at("air.bound").b();
+    const bool bound = bound_();
     std::vector<glm::vec3> points;  // view space
     if (bound) {
       // The frustum's corners: near plane 0-3, far plane 4-7 (a spot's near corners lie a
@@ -223,34 +211,31 @@ class Atmospherics final : public Lesson {
     // Fragments the slices rasterized (llvmpipe counts them before any test), and of those
     // the ones shaded: only those that passed the depth test when it runs first.
     if (const PassWork* work = f.measure.frameWork("air")) {
-      const long long shaded =
-          f.params.at("air.early_reject").b() ? passed_ : work->fragment_invocations;
+      const long long shaded = early_reject_() ? passed_ : work->fragment_invocations;
       f.measure.count("air_fragments_shaded", shaded);
       f.measure.count("air_fragments_skipped", work->fragment_invocations - shaded);
     }
   }
 
   void drawSlicesTimed(Frame& f, const glm::mat4& cone) {
-    const Params& p = f.params;
     auto timing = f.measure.pass("air");
-    slices_drawn_ = p.at("air.slices").i();
+    slices_drawn_ = slices_();
     sliceBounds(f, cone, slices_drawn_);
     passed_ = 0;
     if (!(step_ > 0.0f)) return;  // the cone lies behind the eye
-    const bool early = p.at("air.early_reject").b();
-    const Program& slices = slices_[map_.off() ? 1 : 0][early ? 1 : 0];
-    const float tan_y = std::tan(glm::radians(p.at("camera.fov").f()) * 0.5f);
-    const float aspect = static_cast<float>(f.width) / static_cast<float>(std::max(f.height, 1));
+    const Program& slices =
+        slice_programs_.get({define("SHADOW_OFF", map_.off()), early_reject_.defines()});
     glProgramUniform4fv(slices.id(), slices.location("uRects"), slices_drawn_, &rects_[0][0]);
     slices.set("uFar", far_);
     slices.set("uStep", step_);
     slices.set("uProjection", f.projection);
     slices.set("uInverseView", glm::inverse(f.view));
-    slices.set("uTanHalfFov", glm::vec2(tan_y * aspect, tan_y));
+    // tan(fov/2) across and up: what the perspective matrix divides by.
+    slices.set("uTanHalfFov", 1.0f / glm::vec2(f.projection[0][0], f.projection[1][1]));
     slices.set("uShadowMatrix", map_.textureMatrix());
     slices.set("uSpotMatrix", biasMatrix() * cone);
-    slices.set("uDensity", p.at("air.density").f());
-    slices.set("uJitter", p.at("air.jitter").b() ? 1 : 0);
+    slices.set("uDensity", density_());
+    slices.set("uJitter", jitter_() ? 1 : 0);
     slices.set("uOutput", f.mode == "air" ? 1 : 0);
     slices.set("uAirColor", glm::vec3(1.0f, 0.93f, 0.78f));
     slices.set("uSpot", 0);
@@ -274,7 +259,12 @@ class Atmospherics final : public Lesson {
   }
 
   ShadowMap map_;
-  Program depth_, room_[2], slices_[2][2];  // [shadow.off][air.early_reject]
+  Program depth_;
+  ProgramVariants room_, slice_programs_;
+  IntParam slices_;
+  FloatParam density_, falloff_, dimming_;
+  BoolParam jitter_, bound_, early_reject_;
+  StringParam image_;
   SpotTexture spot_;
   Texture spot_texture_;
   std::string spot_key_;

@@ -2,7 +2,7 @@
 // Steps 3 and 4 of the slide: each slice fragment adds the light the dust there scatters
 // toward the eye: density x spotlight texture x shadow-map test x the length of eye ray the
 // slice stands for. Additive blending: the air adds light and absorbs none.
-#if EARLY_REJECT
+#if AIR_EARLY_REJECT
 // Fragments behind the scene's surfaces fail the depth test before they are shaded (the
 // shader writes no depth).
 layout(early_fragment_tests) in;
@@ -33,7 +33,7 @@ uint hash(uint x) {  // lowbias32, as the truth's sampling
 }
 
 void main() {
-#if !EARLY_REJECT
+#if !AIR_EARLY_REJECT
   gl_FragDepth = gl_FragCoord.z;  // the tests wait for the shader: every fragment is shaded
 #endif
   // The point of the eye ray at this slice's depth, in view space, and the length of ray one

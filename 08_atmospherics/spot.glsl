@@ -11,7 +11,7 @@ float spotLight(vec4 c) {
 }
 
 float shadowTest(vec4 c) {
-#ifdef NO_SHADOW
+#if SHADOW_OFF
   return 1.0;  // shadow.off, the baseline: no map, no lookup
 #endif
   if (c.w <= 0.0) return 1.0;

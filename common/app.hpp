@@ -12,6 +12,7 @@
 #include "image.hpp"
 #include "measure.hpp"
 #include "params.hpp"
+#include "program.hpp"
 #include "scene.hpp"
 #include "shadow_math.hpp"
 #include "truth.hpp"
@@ -60,6 +61,10 @@ struct Frame {
   // its view "air" (the in-scattered light alone, unscaled, in red) and measures it against
   // Truth::airLight.
   std::optional<AirMedium> medium;
+
+  // The view as shader #defines: VIEW_SHADED 0, VIEW_VISIBILITY 1, ... for every view the
+  // lesson has, and VIEW as the one to render (`#if VIEW == VIEW_VISIBILITY`).
+  std::vector<std::string> viewDefines() const;
 
   void bindTarget() const;
   // Binds the target and clears colour, depth and stencil (to the sky, by default).

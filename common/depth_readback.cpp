@@ -1,42 +1,47 @@
 #include "depth_readback.hpp"
 
-#include <imgui.h>
-
 #include <bit>
 
 #include "depth_digits.hpp"
 
 namespace shadows {
 
-void DepthReadback::declare(Params& p, int digits, bool linearChoice) {
-  LightView::declareSize(p);
-  LightView::declareFit(p);
+void DepthReadback::declare(Params& p, bool linearChoice) {
+  const int digits = digits_;
+  light_.declareSize(p);
+  light_.declareFit(p);
   // 000: "frustum confined to objects of interest" is where few bits are enough.
   p.setDefaultFloat(p.at("shadow.fit"), 1.0);
   if (linearChoice) {
-    p.addChoice("map.encoding", {"projective", "linear"}, "projective",
-                "projective: window depth read back; linear: Heidrich's eye-planar Z in colour",
-                kDirtyShadowMap | kDirtyResources);
+    encoding_ =
+        p.addChoice("map.encoding", {"projective", "linear"}, "projective",
+                    "projective: window depth read back; linear: Heidrich's eye-planar Z in colour",
+                    kDirtyShadowMap | kDirtyResources);
   }
-  p.addChoice("map.path", {"read_pixels", "copy_texture", "render_to_texture"}, "read_pixels",
-              "how the depth reaches a texture: glReadPixels + glTexSubImage2D, "
-              "glCopyTexSubImage2D, or none (the light pass's own texture)",
-              kDirtyShadowMap | kDirtyResources);
-  p.addChoice("map.depth_bits", {"24", "16"}, "24",
-              "the light pass's depth buffer (000: copies are fastest when it matches the "
-              "texture's precision)",
-              kDirtyShadowMap | kDirtyResources);
-  p.addChoice("bias.mode", {"polygon_offset", "texgen"}, "polygon_offset",
-              "polygon_offset: while the map is built (000); texgen: subtracted from the "
-              "fragment's r before the divide (000: does not work)",
-              kDirtyShadowMap);
-  p.addFloat("bias.factor", 2.0f, 0.0f, 20.0f, "glPolygonOffset factor (slope scale)",
-             kDirtyShadowMap);
+  path_param_ =
+      p.addChoice("map.path", {"read_pixels", "copy_texture", "render_to_texture"}, "read_pixels",
+                  "how the depth reaches a texture: glReadPixels + glTexSubImage2D, "
+                  "glCopyTexSubImage2D, or none (the light pass's own texture)",
+                  kDirtyShadowMap | kDirtyResources);
+  depth_bits_param_ =
+      p.addChoice("map.depth_bits", {"24", "16"}, "24",
+                  "the light pass's depth buffer (000: copies are fastest when it matches the "
+                  "texture's precision)",
+                  kDirtyShadowMap | kDirtyResources);
+  bias_mode_ =
+      p.addChoice("bias.mode", {"polygon_offset", "texgen"}, "polygon_offset",
+                  "polygon_offset: while the map is built (000); texgen: subtracted from the "
+                  "fragment's r before the divide (000: does not work)",
+                  kDirtyShadowMap);
+  bias_factor_ = p.addFloat("bias.factor", 2.0f, 0.0f, 20.0f,
+                            "glPolygonOffset factor (slope scale)", kDirtyShadowMap);
   const std::string step = digits == 1 ? "1/255" : "1/65535";
-  p.addFloat("bias.steps", 3.0f, 0.0f, digits == 1 ? 64.0f : 4096.0f,
-             "constant bias in map steps (" + step + " of the depth range)", kDirtyShadowMap)
-      .logarithmic = digits == 2;
-  p.addBool("inset", true, "show the map in a corner");
+  Param& steps =
+      p.addFloat("bias.steps", 3.0f, 0.0f, digits == 1 ? 64.0f : 4096.0f,
+                 "constant bias in map steps (" + step + " of the depth range)", kDirtyShadowMap);
+  steps.logarithmic = digits == 2;
+  bias_steps_ = steps;
+  inset_param_ = p.addBool("inset", true, "show the map in a corner");
 }
 
 namespace {
@@ -120,17 +125,15 @@ void DepthReadback::init() {
 }
 
 bool DepthReadback::prepare(Frame& f) {
-  Params& p = f.params;
-  const glm::ivec2 size = LightView::mapSize(p);
-  const Param* encoding = p.find("map.encoding");
-  linear_ = encoding != nullptr && encoding->is("linear");
-  path_ = p.at("map.path").choice();
-  inset_ = p.at("inset").b();
-  depth_bits_ = p.at("map.depth_bits").is("16") ? 16 : 24;
+  const glm::ivec2 size = light_.mapSize();
+  linear_ = encoding_.valid() && encoding_.name() == "linear";
+  path_ = path_param_.name();
+  inset_ = inset_param_();
+  depth_bits_ = depth_bits_param_.name() == "16" ? 16 : 24;
   const std::string key =
       path_ + (linear_ ? "/linear/" : "/projective/") + std::to_string(depth_bits_);
   bool recreated = false;
-  if (p.consume(kDirtyResources) || size != size_ || key != storage_key_) {
+  if (f.params.consume(kDirtyResources) || size != size_ || key != storage_key_) {
     storage_key_ = key;
     recreate(size);
     recreated = true;
@@ -187,9 +190,8 @@ void DepthReadback::recreate(glm::ivec2 size) {
 }
 
 void DepthReadback::render(Frame& f) {
-  const Params& p = f.params;
-  const bool offset = p.at("bias.mode").is("polygon_offset");
-  const float factor = p.at("bias.factor").f(), steps = p.at("bias.steps").f();
+  const bool offset = bias_mode_.name() == "polygon_offset";
+  const float factor = bias_factor_(), steps = bias_steps_();
   {
     auto timing = f.measure.pass("shadow");
     light_target_->bind();
@@ -259,8 +261,8 @@ glm::vec4 DepthReadback::linearPlane() const {
 }
 
 float DepthReadback::texgenBias(const Frame& f) const {
-  if (!f.params.at("bias.mode").is("texgen")) return 0.0f;
-  const float step = f.params.at("bias.steps").f() / (digits_ == 1 ? 255.0f : 65535.0f);
+  if (bias_mode_.name() != "texgen") return 0.0f;
+  const float step = bias_steps_() / (digits_ == 1 ? 255.0f : 65535.0f);
   if (linear_ || light_.frustum().directional) return step;  // q = 1: a plain constant
   // 000's mistake: r - b before the divide by q is b / q after it. Tuned to `steps` at the
   // light's target, it is more in front of it and less behind, and has no slope term.
@@ -289,14 +291,6 @@ void DepthReadback::bindForLookup(const Frame& f, const Program& program) const 
   program.set("uShadowMatrix", light_.textureMatrix());
   program.set("uLinearPlane", linearPlane());
   program.set("uTexgenBias", texgenBias(f));
-}
-
-void DepthReadback::panel(const Frame& f) const {
-  const LightFrustum& fr = light_.frustum();
-  ImGui::Text("light near %.3f  far %.3f  (far/near %.1f)", fr.near, fr.far, fr.far / fr.near);
-  if (f.params.at("shadow.fit").b()) {
-    ImGui::TextDisabled("fitted to the casters: light.near/far unused (shadow.fit off)");
-  }
 }
 
 void DepthReadback::drawInset(const Frame& frame, bool fullscreen) const {

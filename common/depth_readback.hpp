@@ -22,7 +22,7 @@ class DepthReadback {
   // The light view's shadow.* parameters plus map.path, map.depth_bits, bias.mode,
   // bias.factor, bias.steps, inset; with `linearChoice`, map.encoding (Heidrich's linear
   // depth in colour).
-  static void declare(Params& params, int digits, bool linearChoice);
+  void declare(Params& params, bool linearChoice);
 
   explicit DepthReadback(int digits) : digits_(digits) {}
   void init();  // programs and ramp textures (context current)
@@ -38,8 +38,6 @@ class DepthReadback {
   // to unit 2), and sets what the eye shaders of 06/07 read: uMap, uRamp(Big), uMapIsDepth,
   // uReadbackNearest, uLinear, uShadowMatrix, uLinearPlane, uTexgenBias.
   void bindForLookup(const Frame& frame, const Program& program) const;
-  // The panel's lines on the light's frustum (near, far, their ratio, whether fitted).
-  void panel(const Frame& frame) const;
   // The map over the whole target (view "map") or in a corner, when `inset` is on.
   void drawInset(const Frame& frame, bool fullscreen = false) const;
 
@@ -79,6 +77,9 @@ class DepthReadback {
   int depth_bits_ = 24;
   std::string path_, storage_key_;
   bool linear_ = false, inset_ = true;
+  ChoiceParam<> encoding_, path_param_, depth_bits_param_, bias_mode_;
+  FloatParam bias_factor_, bias_steps_;
+  BoolParam inset_param_;
   bool nearest_ = true;  // whether glReadPixels rounds to nearest on this driver (depthToSteps)
   float offset_unit_ = 1.0f / 16777215.0f;  // one glPolygonOffset unit, measured (window depth)
 };

@@ -25,6 +25,13 @@ namespace shadows {
 
 // ---------------------------------------------------------------- Frame helpers
 
+std::vector<std::string> Frame::viewDefines() const {
+  std::vector<std::string> views = params.at("view").choices;
+  // Views the runner renders for itself ("air") are not offered as choices.
+  if (std::find(views.begin(), views.end(), mode) == views.end()) views.push_back(mode);
+  return choiceDefines("view", views, mode);
+}
+
 void Frame::bindTarget() const {
   glBindFramebuffer(GL_FRAMEBUFFER, target);
   glViewport(0, 0, width, height);

@@ -182,54 +182,6 @@ class Mesh {
   GLsizei index_count_ = 0;
 };
 
-// A vertex + fragment program read from files. `#include "x.glsl"` is resolved against the
-// including file's directory, then the shared common/shaders directory. Compile errors
-// name the original file and line. `defines` ("PASS 2", ...) select a variant of a shader
-// written with #if blocks: each is compiled with only the code its settings need.
-class Program {
- public:
-  Program() = default;
-  Program(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile,
-          const std::vector<std::string>& defines = {});
-  void use() const;
-  GLint location(const std::string& name) const;
-  void set(const std::string& name, int v) const;
-  void set(const std::string& name, float v) const;
-  void set(const std::string& name, const glm::vec2& v) const;
-  void set(const std::string& name, const glm::vec3& v) const;
-  void set(const std::string& name, const glm::vec4& v) const;
-  void set(const std::string& name, const glm::mat4& v) const;
-  GLuint id() const { return name_.id(); }
-
- private:
-  GlName<deleteProgram> name_;
-  mutable std::map<std::string, GLint> locations_;
-};
-
-// One vertex + fragment pair compiled per set of defines, on first use, and kept: a lesson
-// whose views and modes are #if blocks of one shader runs only the block its settings need.
-class ProgramVariants {
- public:
-  ProgramVariants() = default;
-  ProgramVariants(std::filesystem::path vertexFile, std::filesystem::path fragmentFile)
-      : vertex_(std::move(vertexFile)), fragment_(std::move(fragmentFile)) {}
-  const Program& get(const std::vector<std::string>& defines);
-
- private:
-  std::filesystem::path vertex_, fragment_;
-  std::map<std::string, Program> programs_;  // by the defines, joined
-};
-
-// The preprocessed source and the file behind each GLSL source-string number.
-struct ShaderSource {
-  std::string text;
-  std::vector<std::string> files;
-};
-ShaderSource preprocessShader(const std::filesystem::path& file);
-// Rewrites "0:12(5): error" style compiler messages into "file.frag:12: error".
-std::string mapShaderLog(const std::string& log, const std::vector<std::string>& files);
-std::filesystem::path commonShaderDir();
-
 // Counts GL errors reported through KHR_debug, and glGetError as a backstop.
 class GlErrorLog {
  public:

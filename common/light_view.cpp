@@ -8,40 +8,38 @@ namespace shadows {
 
 void LightView::declareSize(Params& p) {
   constexpr auto kMap = kDirtyShadowMap | kDirtyResources;
-  p.addInt("shadow.size", 1024, 64, 4096, "shadow map width in texels", kMap).logarithmic = true;
+  size_param_ =
+      p.addInt("shadow.size", 1024, 64, 4096, "shadow map width in texels", kMap).logScale();
   // 0 (square) or the same range as the width: a 64x1 map would "match" absurd area lights.
-  p.addInt("shadow.height", 0, 0, 4096, "shadow map height (0 = square, else 64..4096)", kMap)
-      .check = [](const std::string& text) -> std::string {
-    const double rows = std::strtod(text.c_str(), nullptr);
-    return rows == 0.0 || rows >= 64.0 ? "" : "expected 0 (square) or 64..4096, got " + text;
-  };
+  height_ =
+      p.addInt("shadow.height", 0, 0, 4096, "shadow map height (0 = square, else 64..4096)", kMap)
+          .checkedBy([](const std::string& text) -> std::string {
+            const double rows = std::strtod(text.c_str(), nullptr);
+            return rows == 0.0 || rows >= 64.0 ? ""
+                                               : "expected 0 (square) or 64..4096, got " + text;
+          });
 }
 
 void LightView::declareFit(Params& p) {
-  p.addBool("shadow.fit", false, "fit the light's near/far to the casters' bounds",
-            kDirtyShadowMap);
-  p.addBool("shadow.cache", true, "re-render the map only when the light or a caster changed",
-            kDirtyShadowMap);
-  p.addBool("shadow.off", false,
-            "baseline: the same frame with no shadow work (no map, no lookup), for what a "
-            "shadow costs",
-            kDirtyShadowMap);
-}
-
-glm::ivec2 LightView::mapSize(const Params& p) {
-  const int width = p.at("shadow.size").i();
-  const int height = p.at("shadow.height").i();
-  return {width, height > 0 ? height : width};
+  fit_ = p.addBool("shadow.fit", false, "fit the light's near/far to the casters' bounds",
+                   kDirtyShadowMap);
+  cache_ = p.addBool("shadow.cache", true,
+                     "re-render the map only when the light or a caster changed", kDirtyShadowMap);
+  off_param_ =
+      p.addBool("shadow.off", false,
+                "baseline: the same frame with no shadow work (no map, no lookup), for what a "
+                "shadow costs",
+                kDirtyShadowMap);
 }
 
 bool LightView::update(Frame& f, glm::ivec2 size, bool recreated, std::uint32_t extraDirty) {
-  Params& p = f.params;
-  off_ = p.at("shadow.off").b();
+  off_ = off_param_();
   const bool stale =
-      (p.consume(kDirtyShadowMap | extraDirty) || !p.at("shadow.cache").b() || recreated) && !off_;
+      (f.params.consume(kDirtyShadowMap | extraDirty) || !cache_() || recreated) && !off_;
   size_ = size;
   frustum_ = f.light.frustum(static_cast<float>(size.x) / static_cast<float>(size.y));
-  if (p.at("shadow.fit").b()) {
+  fitted_ = fit_();
+  if (fitted_) {
     const Light& l = f.light;
     fitNearFar(f.light.view, f.scene.casterBounds(l.position, l.directional, l.direction),
                frustum_.directional, frustum_.near, frustum_.far);

@@ -12,11 +12,11 @@ namespace shadows {
 class LightView {
  public:
   // shadow.size and shadow.height: the map's texels.
-  static void declareSize(Params& params);
+  void declareSize(Params& params);
   // shadow.fit, shadow.cache and shadow.off (the unshadowed baseline).
-  static void declareFit(Params& params);
+  void declareFit(Params& params);
   // The map size the parameters ask for (height 0 = square).
-  static glm::ivec2 mapSize(const Params& params);
+  glm::ivec2 mapSize() const { return {size_param_(), height_() > 0 ? height_() : size_param_()}; }
 
   // Computes this frame's frustum and matrices for a map of `size` texels, and says whether
   // the map must be rendered (counted as shadow_map_renders): when the light, a caster or
@@ -33,6 +33,7 @@ class LightView {
   glm::ivec2 size() const { return size_; }
   // shadow.off: the lesson draws its frame without any shadow work (update() renders no map).
   bool off() const { return off_; }
+  bool fitted() const { return fitted_; }  // shadow.fit: near/far fitted to the casters
   // The world size of one texel (along the map's height) at distance d along the light's
   // axis is x * d + y: a spot's texels grow with distance (x = 2 tan(fov/2) / rows, y = 0),
   // a directional light's do not (x = 0, y = 2 extent / rows).
@@ -46,7 +47,9 @@ class LightView {
   LightFrustum frustum_;
   glm::mat4 projection_{1.0f}, view_{1.0f};
   glm::ivec2 size_{0};
-  bool off_ = false;
+  bool off_ = false, fitted_ = false;
+  IntParam size_param_, height_;
+  BoolParam fit_, cache_, off_param_;
 };
 
 }  // namespace shadows

@@ -6,6 +6,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -88,6 +89,15 @@ bool inRange(const Param& p, double v) {
 }  // namespace
 
 // Levenshtein distance, for "did you mean".
+// "pcf.early_out" -> PCF_EARLY_OUT: a preprocessor name.
+std::string macroName(const std::string& name) {
+  std::string m;
+  for (const char c : name) {
+    m += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::toupper(c)) : '_';
+  }
+  return m;
+}
+
 size_t editDistance(const std::string& a, const std::string& b) {
   std::vector<size_t> row(b.size() + 1);
   for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
@@ -118,6 +128,32 @@ std::string Param::text() const {
       return string_value;
   }
   return {};
+}
+
+std::vector<std::string> choiceDefines(const std::string& macro,
+                                       const std::vector<std::string>& choices,
+                                       const std::string& current) {
+  std::vector<std::string> lines;
+  for (size_t i = 0; i < choices.size(); ++i) {
+    lines.push_back(macroName(macro + "_" + choices[i]) + " " + std::to_string(i));
+  }
+  lines.push_back(macroName(macro) + " " + macroName(macro + "_" + current));
+  return lines;
+}
+
+std::vector<std::string> Param::defines() const {
+  if (kind == ParamKind::Choice) return choiceDefines(name, choices, choice());
+  if (kind == ParamKind::Bool || kind == ParamKind::Int) {
+    return {macroName(name) + " " + std::to_string(i())};
+  }
+  throw std::logic_error("parameter " + name + " has no #define form (a " + kindName(kind) + ")");
+}
+
+void requireKind(const Param& p, ParamKind kind) {
+  if (p.kind != kind) {
+    throw std::logic_error("parameter " + p.name + " is a " + kindName(p.kind) + ", not a " +
+                           kindName(kind));
+  }
 }
 
 Param& Params::add(Param p) {

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 #include <map>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace shadows {
@@ -56,6 +57,62 @@ struct Param {
   const std::string& s() const { return string_value; }
   bool is(const std::string& choiceName) const { return choice() == choiceName; }
   std::string text() const;  // the value as --set would take it
+  // Declaration helpers: p.addFloat(...).logScale(), p.addString(...).checkedBy(fn).
+  Param& logScale() {  // a slider that moves in decades
+    logarithmic = true;
+    return *this;
+  }
+  Param& checkedBy(std::function<std::string(const std::string&)> extraCheck) {
+    check = std::move(extraCheck);
+    return *this;
+  }
+  // The value as shader #defines, named after the parameter ("pcf.mode" -> PCF_MODE): a
+  // choice defines one name per choice and itself as the current one (PCF_MODE_NONE 0, ...,
+  // PCF_MODE PCF_MODE_GRID), so a shader reads `#if PCF_MODE == PCF_MODE_GRID`; a bool or an
+  // int defines its value (PCF_EARLY_OUT 1).
+  std::vector<std::string> defines() const;
+};
+
+// The #defines for a choice `macro` among `choices` set to `current` (Param::defines' rule,
+// for choices that are not one parameter, like the frame's view).
+std::vector<std::string> choiceDefines(const std::string& macro,
+                                       const std::vector<std::string>& choices,
+                                       const std::string& current);
+
+// A declared parameter as a lesson keeps it from declare(): typed, and read while rendering
+// without a lookup by name. `dimming_ = p.addFloat("dimming", ...)`, then `dimming_()`.
+template <typename T>
+class ParamRef {
+ public:
+  ParamRef() = default;
+  ParamRef(Param& p);  // NOLINT(google-explicit-constructor): from Params::add*()
+  T operator()() const;
+  Param& param() const { return *param_; }
+  std::vector<std::string> defines() const { return param_->defines(); }
+
+ private:
+  Param* param_ = nullptr;
+};
+using FloatParam = ParamRef<float>;
+using IntParam = ParamRef<int>;
+using BoolParam = ParamRef<bool>;
+using Vec3Param = ParamRef<glm::vec3>;
+using StringParam = ParamRef<std::string>;
+
+// A choice read as the enum whose order its declaration lists (or as an index).
+template <typename Enum = int>
+class ChoiceParam {
+ public:
+  ChoiceParam() = default;
+  ChoiceParam(Param& p);  // NOLINT(google-explicit-constructor): from Params::addChoice()
+  Enum operator()() const { return static_cast<Enum>(param_->i()); }
+  const std::string& name() const { return param_->choice(); }
+  bool valid() const { return param_ != nullptr; }  // declared (some lessons leave one out)
+  Param& param() const { return *param_; }
+  std::vector<std::string> defines() const { return param_->defines(); }
+
+ private:
+  Param* param_ = nullptr;
 };
 
 class Params {
@@ -124,5 +181,37 @@ class Params {
   std::map<std::string, std::string> editing_, refused_;
   std::uint32_t dirty_ = kDirtyAll;
 };
+
+// Handles check their parameter's kind once, when the lesson takes them (a wrong kind is a
+// programming error: std::logic_error naming the parameter).
+void requireKind(const Param& p, ParamKind kind);
+
+template <typename T>
+constexpr ParamKind kindOf() {
+  if constexpr (std::is_same_v<T, float>) return ParamKind::Float;
+  if constexpr (std::is_same_v<T, int>) return ParamKind::Int;
+  if constexpr (std::is_same_v<T, bool>) return ParamKind::Bool;
+  if constexpr (std::is_same_v<T, glm::vec3>) return ParamKind::Vec3;
+  if constexpr (std::is_same_v<T, std::string>) return ParamKind::String;
+}
+
+template <typename T>
+ParamRef<T>::ParamRef(Param& p) : param_(&p) {
+  requireKind(p, kindOf<T>());
+}
+
+template <typename T>
+T ParamRef<T>::operator()() const {
+  if constexpr (std::is_same_v<T, float>) return param_->f();
+  if constexpr (std::is_same_v<T, int>) return param_->i();
+  if constexpr (std::is_same_v<T, bool>) return param_->b();
+  if constexpr (std::is_same_v<T, glm::vec3>) return param_->v();
+  if constexpr (std::is_same_v<T, std::string>) return param_->s();
+}
+
+template <typename Enum>
+ChoiceParam<Enum>::ChoiceParam(Param& p) : param_(&p) {
+  requireKind(p, ParamKind::Choice);
+}
 
 }  // namespace shadows

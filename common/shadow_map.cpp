@@ -3,22 +3,22 @@
 namespace shadows {
 
 void ShadowMap::declare(Params& p) {
-  LightView::declareSize(p);
-  p.addChoice("shadow.format", {"16", "24", "32f"}, "24", "depth bits of the map",
-              kDirtyShadowMap | kDirtyResources);
-  p.addChoice("shadow.filter", {"nearest", "linear"}, "nearest",
-              "linear = the hardware 2x2 compare filter (results averaged, never depths)");
-  LightView::declareFit(p);
-  p.addBool("inset", true, "show the depth map in a corner");
+  light_.declareSize(p);
+  format_ = p.addChoice("shadow.format", {"16", "24", "32f"}, "24", "depth bits of the map",
+                        kDirtyShadowMap | kDirtyResources);
+  filter_param_ =
+      p.addChoice("shadow.filter", {"nearest", "linear"}, "nearest",
+                  "linear = the hardware 2x2 compare filter (results averaged, never depths)");
+  light_.declareFit(p);
+  inset_ = p.addBool("inset", true, "show the depth map in a corner");
 }
 
 bool ShadowMap::prepare(Frame& f, std::uint32_t extraDirty) {
-  Params& p = f.params;
-  const glm::ivec2 size = LightView::mapSize(p);
-  const std::string& format = p.at("shadow.format").choice();
+  const glm::ivec2 size = light_.mapSize();
+  const std::string& format = format_.name();
   const int bits = format == "16" ? 16 : format == "24" ? 24 : 32;
   bool recreated = false;
-  if (p.consume(kDirtyResources) || size != size_ || bits != bits_) {
+  if (f.params.consume(kDirtyResources) || size != size_ || bits != bits_) {
     size_ = size, bits_ = bits;
     texture_ = Texture::depth(size.x, size.y, bits);
     texture_.setCompare(true);  // sampler2DShadow: the texture unit does the compare
@@ -27,9 +27,8 @@ bool ShadowMap::prepare(Frame& f, std::uint32_t extraDirty) {
     framebuffer_->check();
     recreated = true;
   }
-  filter_ = p.at("shadow.filter").is("linear") ? GL_LINEAR : GL_NEAREST;
+  filter_ = filter_param_.name() == "linear" ? GL_LINEAR : GL_NEAREST;
   texture_.setFilter(filter_);
-  inset_ = p.at("inset").b();
   return light_.update(f, size, recreated, extraDirty);
 }
 
@@ -37,6 +36,16 @@ void ShadowMap::beginRender() const {
   framebuffer_->bind();
   glViewport(0, 0, size_.x, size_.y);
   glClear(GL_DEPTH_BUFFER_BIT);
+}
+
+void ShadowMap::renderCasters(Frame& f, const Program& depthProgram, const PassState& state) const {
+  auto timing = f.measure.pass("shadow");
+  beginRender();
+  state.apply();
+  const glm::mat4 light_view_projection = lightViewProjection();
+  depthProgram.set("uLightViewProjection", light_view_projection);
+  f.drawObjects(depthProgram, Objects::Casters, &light_view_projection);
+  PassState{}.apply();
 }
 
 bool ShadowMap::drawDepthView(const Frame& frame) const {
@@ -47,7 +56,7 @@ bool ShadowMap::drawDepthView(const Frame& frame) const {
 }
 
 void ShadowMap::drawInset(const Frame& frame, bool fullscreen) const {
-  if ((!inset_ || light_.off()) && !fullscreen) return;
+  if ((!inset_() || light_.off()) && !fullscreen) return;
   const LightFrustum& fr = light_.frustum();
   frame.drawDepthInset(texture_, fr.near, fr.far, !fr.directional, fullscreen);
 }

@@ -10,7 +10,7 @@ namespace shadows {
 class ShadowMap {
  public:
   // shadow.size, shadow.height, shadow.format, shadow.filter, shadow.fit, shadow.cache, inset.
-  static void declare(Params& params);
+  void declare(Params& params);
 
   // Creates or re-creates the map, computes the light's matrices, and says whether the map
   // must be rendered this frame (counted as shadow_map_renders). Any `extraDirty` bits a
@@ -29,6 +29,10 @@ class ShadowMap {
   }
   // Binds the map's framebuffer, sets the viewport and clears the depth.
   void beginRender() const;
+  // Pass 1, timed as "shadow": beginRender, then `state` (a bias), then the casters inside the
+  // light frustum (the others are culled and counted) with `depthProgram`, whose
+  // uLightViewProjection = P_light * V_light is set here; leaves the default state behind.
+  void renderCasters(Frame& frame, const Program& depthProgram, const PassState& state = {}) const;
   // Kilgard's "depth buffer from the light's point of view": when frame.mode is
   // "light_depth", draws the map over the whole target and returns true.
   bool drawDepthView(const Frame& frame) const;
@@ -37,6 +41,7 @@ class ShadowMap {
 
   const Texture& texture() const { return texture_; }
   bool off() const { return light_.off(); }
+  bool fitted() const { return light_.fitted(); }
   int width() const { return light_.size().x; }
   int height() const { return light_.size().y; }
   const LightView& light() const { return light_; }
@@ -46,6 +51,7 @@ class ShadowMap {
   glm::mat4 lightViewProjection() const { return light_.viewProjection(); }
   glm::mat4 textureMatrix() const { return light_.textureMatrix(); }
   GLenum filter() const { return filter_; }
+  int depthBits() const { return bits_; }  // shadow.format: 16, 24 or 32 (float)
   glm::vec2 texelFootprint() const { return light_.texelFootprint(); }
   float texelWorldSize(float distance) const { return light_.texelWorldSize(distance); }
 
@@ -56,7 +62,8 @@ class ShadowMap {
   glm::ivec2 size_{0};
   int bits_ = 0;
   GLenum filter_ = GL_NEAREST;
-  bool inset_ = true;
+  ChoiceParam<> format_, filter_param_;
+  BoolParam inset_;
 };
 
 }  // namespace shadows

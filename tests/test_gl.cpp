@@ -2,6 +2,7 @@
 // works, and the error log catches every GL error.
 #include "context.hpp"
 #include "gl.hpp"
+#include "program.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,0 +1,190 @@
+// Shader programs from files: #include resolved, compile errors as file:line, variants
+// selected by #defines and compiled on first use.
+#include <fstream>
+#include <glm/gtc/type_ptr.hpp>
+#include <regex>
+#include <sstream>
+
+#include "program.hpp"
+
+namespace shadows {
+
+std::filesystem::path commonShaderDir() {
+  return SHADOWS_COMMON_SHADER_DIR;
+}
+
+namespace {
+
+std::string readFile(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw GlFailure("cannot read shader " + file.string());
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void appendWithIncludes(const std::filesystem::path& file, ShaderSource& out, int depth) {
+  if (depth > 16) throw GlFailure(file.string() + ": #include nested too deep");
+  const std::string index = std::to_string(out.files.size());
+  out.files.push_back(file.filename().string());
+  // GLSL wants #version first, so only included files start with their own #line.
+  if (depth > 0) out.text += "#line 1 " + index + "\n";
+  std::istringstream lines(readFile(file));
+  std::string line;
+  int number = 0;
+  static const std::regex include_re(R"(^\s*#\s*include\s+"([^"]+)\")");
+  while (std::getline(lines, line)) {
+    ++number;
+    std::smatch m;
+    if (std::regex_search(line, m, include_re)) {
+      auto target = file.parent_path() / m[1].str();
+      if (!std::filesystem::exists(target)) target = commonShaderDir() / m[1].str();
+      if (!std::filesystem::exists(target)) {
+        throw GlFailure(file.filename().string() + ":" + std::to_string(number) +
+                        ": cannot find include \"" + m[1].str() + "\"");
+      }
+      appendWithIncludes(target, out, depth + 1);
+      out.text += "#line " + std::to_string(number + 1) + " " + index + "\n";
+      continue;
+    }
+    out.text += line + "\n";
+    if (depth == 0 && line.find("#version") != std::string::npos) {
+      out.text += "#line " + std::to_string(number + 1) + " " + index + "\n";
+    }
+  }
+}
+
+GLuint compile(GLenum stage, const std::filesystem::path& file,
+               const std::vector<std::string>& defines) {
+  ShaderSource src = preprocessShader(file);
+  // The variant's defines go right after #version (whose #line directive follows them, so
+  // error lines still name the file's own lines).
+  std::string define_lines;
+  for (const std::string& d : defines) define_lines += "#define " + d + "\n";
+  const size_t version = src.text.find("#version");
+  const size_t after = version == std::string::npos ? 0 : src.text.find('\n', version) + 1;
+  src.text.insert(after, define_lines);
+  const GLuint shader = glCreateShader(stage);
+  const char* text = src.text.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<size_t>(std::max(length, 1)), '\0');
+    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    glDeleteShader(shader);
+    throw GlFailure(mapShaderLog(log, src.files));
+  }
+  return shader;
+}
+
+}  // namespace
+
+ShaderSource preprocessShader(const std::filesystem::path& file) {
+  ShaderSource out;
+  appendWithIncludes(file, out, 0);
+  return out;
+}
+
+std::string mapShaderLog(const std::string& log, const std::vector<std::string>& files) {
+  // Mesa writes "0:12(5): error: ..."; others "ERROR: 0:12: ...".
+  static const std::regex where_re(R"((\d+):(\d+)(\(\d+\))?)");
+  std::string out;
+  std::smatch m;
+  std::string rest = log;
+  while (std::regex_search(rest, m, where_re)) {
+    const size_t index = std::stoul(m[1].str());
+    out += m.prefix().str();
+    if (index < files.size()) {
+      out += files[index] + ":" + m[2].str();
+    } else {
+      out += m[0].str();
+    }
+    rest = m.suffix().str();
+  }
+  out += rest;
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\0')) out.pop_back();
+  return out;
+}
+
+Program::Program(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile,
+                 const std::vector<std::string>& defines) {
+  const GLuint vs = compile(GL_VERTEX_SHADER, vertexFile, defines);
+  GLuint fs = 0;
+  try {
+    fs = compile(GL_FRAGMENT_SHADER, fragmentFile, defines);
+  } catch (...) {
+    glDeleteShader(vs);
+    throw;
+  }
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, vs);
+  glAttachShader(program, fs);
+  glLinkProgram(program);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  GLint ok = 0;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<size_t>(std::max(length, 1)), '\0');
+    glGetProgramInfoLog(program, length, nullptr, log.data());
+    glDeleteProgram(program);
+    throw GlFailure(vertexFile.filename().string() + " + " + fragmentFile.filename().string() +
+                    ": link failed: " + log);
+  }
+  name_ = GlName<deleteProgram>(program);
+}
+
+void Program::use() const {
+  glUseProgram(name_.id());
+}
+
+const Program& ProgramVariants::get(std::initializer_list<std::vector<std::string>> parts) {
+  std::vector<std::string> defines;
+  std::string key;
+  for (const auto& part : parts) {
+    for (const std::string& d : part) {
+      defines.push_back(d);
+      key += d + ";";
+    }
+  }
+  last_key_ = key;
+  auto it = programs_.find(key);
+  if (it == programs_.end())
+    it = programs_.emplace(key, Program(vertex_, fragment_, defines)).first;
+  return it->second;
+}
+
+GLint Program::location(const std::string& name) const {
+  auto it = locations_.find(name);
+  if (it != locations_.end()) return it->second;
+  const GLint loc = glGetUniformLocation(name_.id(), name.c_str());
+  locations_.emplace(name, loc);
+  return loc;
+}
+
+void Program::set(const std::string& name, int v) const {
+  glProgramUniform1i(name_.id(), location(name), v);
+}
+void Program::set(const std::string& name, float v) const {
+  glProgramUniform1f(name_.id(), location(name), v);
+}
+void Program::set(const std::string& name, const glm::vec2& v) const {
+  glProgramUniform2fv(name_.id(), location(name), 1, glm::value_ptr(v));
+}
+void Program::set(const std::string& name, const glm::vec3& v) const {
+  glProgramUniform3fv(name_.id(), location(name), 1, glm::value_ptr(v));
+}
+void Program::set(const std::string& name, const glm::vec4& v) const {
+  glProgramUniform4fv(name_.id(), location(name), 1, glm::value_ptr(v));
+}
+void Program::set(const std::string& name, const glm::mat4& v) const {
+  glProgramUniformMatrix4fv(name_.id(), location(name), 1, GL_FALSE, glm::value_ptr(v));
+}
+
+}  // namespace shadows

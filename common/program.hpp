@@ -1,0 +1,75 @@
+// A program from shader files: #include, file:line errors, variants by #define.
+#pragma once
+
+#include <filesystem>
+#include <glm/glm.hpp>
+#include <initializer_list>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "gl.hpp"
+
+namespace shadows {
+
+// A vertex + fragment program read from files. `#include "x.glsl"` is resolved against the
+// including file's directory, then the shared common/shaders directory. Compile errors
+// name the original file and line. `defines` ("PASS 2", ...) select a variant of a shader
+// written with #if blocks: each is compiled with only the code its settings need.
+class Program {
+ public:
+  Program() = default;
+  Program(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile,
+          const std::vector<std::string>& defines = {});
+  void use() const;
+  GLint location(const std::string& name) const;
+  void set(const std::string& name, int v) const;
+  void set(const std::string& name, float v) const;
+  void set(const std::string& name, const glm::vec2& v) const;
+  void set(const std::string& name, const glm::vec3& v) const;
+  void set(const std::string& name, const glm::vec4& v) const;
+  void set(const std::string& name, const glm::mat4& v) const;
+  GLuint id() const { return name_.id(); }
+
+ private:
+  GlName<deleteProgram> name_;
+  mutable std::map<std::string, GLint> locations_;
+};
+
+// One vertex + fragment pair compiled per set of defines, on first use, and kept: a lesson
+// whose views and modes are #if blocks of one shader runs only the block its settings need.
+class ProgramVariants {
+ public:
+  ProgramVariants() = default;
+  ProgramVariants(std::filesystem::path vertexFile, std::filesystem::path fragmentFile)
+      : vertex_(std::move(vertexFile)), fragment_(std::move(fragmentFile)) {}
+  // The program for these defines, each part the lines one setting contributes:
+  // get({pcf_mode_.defines(), define("PCF_COUNT", counting), frame.viewDefines()}).
+  const Program& get(std::initializer_list<std::vector<std::string>> parts);
+  // How many variants were compiled so far, and the defines of the last one asked for (a
+  // frame's choice of variant, for the report and the tests).
+  size_t compiled() const { return programs_.size(); }
+  const std::string& lastKey() const { return last_key_; }
+
+ private:
+  std::filesystem::path vertex_, fragment_;
+  std::map<std::string, Program> programs_;  // by the defines, joined
+  std::string last_key_;
+};
+
+// One #define line, "NAME value", for a setting that is not a parameter (a pass number).
+inline std::vector<std::string> define(const std::string& name, int value) {
+  return {name + " " + std::to_string(value)};
+}
+
+// The preprocessed source and the file behind each GLSL source-string number.
+struct ShaderSource {
+  std::string text;
+  std::vector<std::string> files;
+};
+ShaderSource preprocessShader(const std::filesystem::path& file);
+// Rewrites "0:12(5): error" style compiler messages into "file.frag:12: error".
+std::string mapShaderLog(const std::string& log, const std::vector<std::string>& files);
+std::filesystem::path commonShaderDir();
+
+}  // namespace shadows
