@@ -3,7 +3,7 @@
 // NN_name/sweep.cpp (common/sweep_spec.hpp), the studies across lessons in studies.cpp.
 //
 //   sweep_main.cpp  command line, main(): which sweeps, the benchmarks, the files per sweep
-//   configs.cpp     a sweep -> its configurations; the catalogue of sweeps
+//   configs.cpp     a sweep -> its configurations; the catalogue of sweeps; --set checks
 //   run.cpp         Bench (one round of one configuration), Reporter (the console table)
 //   tables.cpp      the CSV/JSON table, writing files, the checks on results and files
 //   plot.cpp        the plot's data and gnuplot
@@ -32,6 +32,8 @@ struct Options {
   // The plot's time. CPU time per frame by default: on the shared 2-core machine other jobs
   // stretch wall times (median or fastest frame) 2-3x more than CPU times (see README.md).
   std::string plot_x = "cpu";
+  // --set name=value from the command line, after every configuration's own settings.
+  std::vector<std::string> sets;
 };
 
 struct Config {
@@ -72,6 +74,10 @@ struct Result {
 std::map<std::string, Sweep> studies();
 // Every sweep this program can run: the linked lessons' and the studies, by name.
 const std::map<std::string, Sweep>& allSweeps();
+// "" or why --set `sets` cannot go with this sweep: a name or value the rendering lesson's
+// Params::assign refuses, or a parameter an axis (or the scene) already varies.
+std::string checkSets(const std::string& name, const Sweep& sweep,
+                      const std::vector<std::string>& sets);
 // scenes x axes (thinned by --quick, three by --smoke), axes[0] fastest.
 std::vector<Config> expand(const std::string& name, const Sweep& sweep, const Options& o);
 

@@ -1,5 +1,6 @@
 // From a sweep to its configurations, and which sweeps there are.
 #include <algorithm>
+#include <set>
 
 #include "bench.hpp"
 
@@ -12,6 +13,41 @@ const std::map<std::string, Sweep>& allSweeps() {
     return sweeps;
   }();
   return all;
+}
+
+std::string checkSets(const std::string& name, const Sweep& sweep,
+                      const std::vector<std::string>& sets) {
+  if (sets.empty()) return {};
+  // What the sweep varies itself (a --set would override it, and the CSV would then name values
+  // that did not run), and the lessons that render it.
+  std::set<std::string> varied = {"scene"}, lessons;
+  if (!sweep.study) lessons.insert(name);
+  for (const Axis& axis : sweep.axes) {
+    for (const std::string& value : axis.values) {
+      for (const std::string& set : settingsOf(axis, value).second) {
+        const std::string param = set.substr(0, set.find('='));
+        if (param == "lesson") {
+          lessons.insert(set.substr(7));
+        } else {
+          varied.insert(param);
+        }
+      }
+    }
+  }
+  for (const std::string& set : sets) {
+    const std::string param = set.substr(0, set.find('='));
+    if (varied.contains(param)) {
+      return "--set " + set + ": the sweep " + name + " varies " + param + " itself";
+    }
+  }
+  // The runner's own check, on each lesson's parameters at their defaults, in order.
+  for (const std::string& lesson : lessons) {
+    Runner probe(lesson, makeLesson(lesson), RunOptions{});  // parameters only, no GL
+    for (const std::string& set : sets) {
+      if (std::string e = probe.params().assign(set); !e.empty()) return lesson + ": " + e;
+    }
+  }
+  return {};
 }
 
 std::vector<Config> expand(const std::string& name, const Sweep& sweep, const Options& o) {
@@ -42,6 +78,7 @@ std::vector<Config> expand(const std::string& name, const Sweep& sweep, const Op
       }
     }
     c.sets.insert(c.sets.end(), sweep.fixed.begin(), sweep.fixed.end());
+    c.sets.insert(c.sets.end(), o.sets.begin(), o.sets.end());  // --set: last, so it wins
     // The index into the full (unthinned) axis, so the plot's series keep their identity.
     for (size_t a = 0; a < axes.size(); ++a) {
       const auto& full = sweep.axes[a].values;

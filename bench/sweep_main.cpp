@@ -24,7 +24,7 @@ namespace {
 const char* kUsage =
     "usage: bench_sweep [--lesson NAME | --all] [--out-dir DIR] [--size WxH] [--frames N]\n"
     "                   [--rounds R] [--smoke] [--quick] [--plot-x cpu|min|median] [--no-plot]\n"
-    "                   [--benchmark_... flags]\n"
+    "                   [--set name=value ...] [--benchmark_... flags]\n"
     "  --lesson NAME  the lesson to sweep (default 03_shadow_map_basic); --all: every lesson\n"
     "                 with a sweep\n"
     "  --out-dir DIR  where <lesson>.csv, .json and .png go (default bench/results)\n"
@@ -37,10 +37,12 @@ const char* kUsage =
     "  --plot-x cpu|min|median  the plot's time: process CPU time per frame, all threads\n"
     "                 (default: the least disturbed by other jobs), or the fastest or the median\n"
     "                 frame's wall time\n"
+    "  --set name=value  a lesson parameter for every configuration (repeatable), as the\n"
+    "                 lessons' --set takes it; checked against every lesson the sweep renders\n"
     "  --no-plot      skip gnuplot\n"
     "Google Benchmark's own flags (e.g. --benchmark_filter=cubes) are passed through.\n";
 
-// Returns "" or what was wrong (exit 2). --size, --frames and --rounds read and say
+// Returns "" or what was wrong (exit 2). --size, --frames, --rounds and --set read and say
 // what is wrong as the lessons' own command line does (common/arguments.hpp).
 std::string parse(int argc, char** argv, Options& o, bool& all) {
   for (Arguments args(argc, argv); args.next();) {
@@ -63,6 +65,8 @@ std::string parse(int argc, char** argv, Options& o, bool& all) {
     } else if (arg == "--rounds") {
       why = readCount(args, o.rounds, 100);
       o.rounds_given = true;
+    } else if (arg == "--set") {
+      why = readSet(args, o.sets);
     } else if (arg == "--smoke") {
       o.smoke = true;
     } else if (arg == "--quick") {
@@ -142,6 +146,11 @@ int sweepMain(int argc, char** argv) {
     if (std::find(with_sweep.begin(), with_sweep.end(), lesson) == with_sweep.end()) {
       std::fprintf(stderr, "bench_sweep: no sweep for lesson '%s'; lessons with one: %s\n",
                    lesson.c_str(), joined(with_sweep).c_str());
+      return 2;
+    }
+    // A bad --set stops here, before anything is rendered, with the runner's own message.
+    if (std::string e = checkSets(lesson, allSweeps().at(lesson), o.sets); !e.empty()) {
+      std::fprintf(stderr, "bench_sweep: %s\n", e.c_str());
       return 2;
     }
   }

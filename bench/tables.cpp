@@ -148,6 +148,11 @@ std::string toJson(const Table& t, const std::string& lesson, const Options& o) 
   json.endArray();
   json.value("frames", o.frames);
   json.value("rounds", o.rounds);
+  if (!o.sets.empty()) {  // bench_sweep's --set, after every row's own settings
+    json.beginArray("sets");
+    for (const std::string& set : o.sets) json.value("", set);
+    json.endArray();
+  }
   // Rows carry the CSV's columns under the same names; empty cells are null.
   json.beginArray("rows");
   for (const auto& row : t.rows) {
