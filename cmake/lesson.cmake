@@ -1,7 +1,14 @@
-# One lesson = one directory with main.cpp and its shaders. The lesson code is an object
-# library so tests can drive the same code in-process; the executable adds the runner's main.
+# One lesson = one directory with main.cpp and its shaders, and optionally sweep.cpp, its
+# time-vs-error sweep for bench_sweep (SHADOWS_SWEEP). The lesson code is an object library so
+# tests and the bench can drive the same code in-process; the executable adds the runner's main.
+# sweep.cpp goes into the same object library: wherever the lesson is linked, its sweep comes
+# with it (bench_sweep runs it, lesson_tests checks its settings against the lesson's
+# parameters), and the lesson binary carries a few unused bytes instead of a second list of
+# what belongs to a lesson.
 function(add_lesson name)
-  add_library(${name}_lesson OBJECT ${name}/main.cpp)
+  # A glob, so that a sweep.cpp added later is noticed by the next build, as a new lesson is.
+  file(GLOB sweep CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/${name}/sweep.cpp)
+  add_library(${name}_lesson OBJECT ${name}/main.cpp ${sweep})
   target_link_libraries(${name}_lesson PUBLIC shadows_common)
   target_compile_options(${name}_lesson PRIVATE ${SHADOWS_WARNINGS})
   target_compile_definitions(${name}_lesson

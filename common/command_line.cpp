@@ -1,6 +1,7 @@
 // The command line of every lesson binary, and its main().
 #include "app.hpp"
 
+#include "arguments.hpp"
 #include "context.hpp"
 #include "json.hpp"
 
@@ -77,24 +78,12 @@ std::string outputProblem(const std::string& flag, const std::string& path) {
   return {};
 }
 
-bool parsePositive(const std::string& text, int& out, int max) {
-  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos) return false;
-  if (text.size() > 6) return false;
-  out = std::stoi(text);
-  return out >= 1 && out <= max;
-}
-
 }  // namespace
 
 std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto next = [&](std::string& out) -> bool {
-      if (i + 1 >= argc) return false;
-      out = argv[++i];
-      return true;
-    };
-    std::string value;
+  for (Arguments args(argc, argv); args.next();) {
+    const std::string& arg = args.flag();
+    std::string value, why;
     if (arg == "--headless") {
       o.headless = true;
     } else if (arg == "--window") {
@@ -110,34 +99,28 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
     } else if (arg == "--help" || arg == "-h") {
       o.help = true;
     } else if (arg == "--backend") {
-      if (!next(value) || (value != "osmesa" && value != "egl")) {
+      if (!args.value(value) || (value != "osmesa" && value != "egl")) {
         return "--backend: expected osmesa or egl";
       }
       o.backend = value;
     } else if (arg == "--size") {
-      const auto x = next(value) ? value.find('x') : std::string::npos;
-      if (x == std::string::npos || !parsePositive(value.substr(0, x), o.width, 8192) ||
-          !parsePositive(value.substr(x + 1), o.height, 8192)) {
-        return "--size: expected WxH with W and H in 1..8192, got '" + value + "'";
-      }
+      why = readSize(args, o.width, o.height);
     } else if (arg == "--frames") {
-      if (!next(value) || !parsePositive(value, o.frames, 100000)) {
-        return "--frames: expected a whole number in 1..100000, got '" + value + "'";
-      }
+      why = readCount(args, o.frames, 100000);
     } else if (arg == "--set") {
-      if (!next(value)) return "--set: expected name=value";
-      o.sets.push_back(value);
+      why = readSet(args, o.sets);
     } else if (arg == "--out" || arg == "--report" || arg == "--truth-out" ||
                arg == "--error-out") {
-      if (!next(value)) return arg + ": expected a file name";
-      if (std::string why = outputProblem(arg, value); !why.empty()) return why;
+      if (!args.value(value)) return arg + ": expected a file name";
+      if (why = outputProblem(arg, value); !why.empty()) return why;
       (arg == "--out"         ? o.out
        : arg == "--report"    ? o.report
        : arg == "--truth-out" ? o.truth_out
                               : o.error_out) = value;
     } else {
-      return "unknown option '" + printable(arg) + "'; see --help";
+      return unknownOption(arg);
     }
+    if (!why.empty()) return why;
   }
   // Two outputs into one regular file would leave only the last: refuse it up front.
   const std::pair<const char*, const std::string*> outputs[] = {{"--out", &o.out},

@@ -1,0 +1,18 @@
+// Lesson 05's time-vs-error sweep for bench_sweep (bench/README.md).
+#include "sweep_spec.hpp"
+
+// Along a series, kernels from cheapest to dearest, so the plot shows where 001's 4-tap dither
+// sits against 64 taps. All points of a series share the radius and the map size, hence the
+// same area-light truth ("none" and hw2x2 have their own and are left out); early_out=false
+// shows what skipping settled neighbourhoods saves.
+SHADOWS_SWEEP(
+    {.scenes = {"torus_pyramid", "dueling"},
+     .axes = {{"kernel",
+               {"dithered4:pcf.mode=dithered", "grid4:pcf.mode=grid pcf.taps=4",
+                "poisson16:pcf.mode=poisson pcf.taps=16", "grid16:pcf.mode=grid pcf.taps=16",
+                "poisson64:pcf.mode=poisson pcf.taps=64", "grid64:pcf.mode=grid pcf.taps=64",
+                "grid64_all_taps:pcf.mode=grid pcf.taps=64 pcf.early_out=false"}},
+              {"pcf.radius", {"1", "2", "4"}},
+              {"shadow.size", {"1024", "2048"}}},
+     .fixed = {"shadow.cache=false", "inset=false", "pcf.count=false"},
+     .plot_metrics = {"vis_mae", "false_lit_pct"}});

@@ -1,0 +1,118 @@
+// From a sweep to its configurations, and which sweeps there are.
+#include <algorithm>
+#include <set>
+
+#include "bench.hpp"
+
+namespace shadows::bench {
+
+const std::map<std::string, Sweep>& allSweeps() {
+  static const std::map<std::string, Sweep> all = [] {
+    std::map<std::string, Sweep> sweeps = studies();
+    sweeps.insert(registeredSweeps().begin(), registeredSweeps().end());
+    return sweeps;
+  }();
+  return all;
+}
+
+std::string checkSets(const std::string& name, const Sweep& sweep,
+                      const std::vector<std::string>& sets) {
+  if (sets.empty()) return {};
+  // What the sweep varies itself (a --set would override it, and the CSV would then name values
+  // that did not run), and the lessons that render it.
+  std::set<std::string> varied = {"scene"}, lessons;
+  if (!sweep.study) lessons.insert(name);
+  for (const Axis& axis : sweep.axes) {
+    for (const std::string& value : axis.values) {
+      for (const std::string& set : settingsOf(axis, value).second) {
+        const std::string param = set.substr(0, set.find('='));
+        if (param == "lesson") {
+          lessons.insert(set.substr(7));
+        } else {
+          varied.insert(param);
+        }
+      }
+    }
+  }
+  for (const std::string& set : sets) {
+    const std::string param = set.substr(0, set.find('='));
+    if (varied.contains(param)) {
+      return "--set " + set + ": the sweep " + name + " varies " + param + " itself";
+    }
+  }
+  // The runner's own check, on each lesson's parameters at their defaults, in order.
+  for (const std::string& lesson : lessons) {
+    Runner probe(lesson, makeLesson(lesson), RunOptions{});  // parameters only, no GL
+    for (const std::string& set : sets) {
+      if (std::string e = probe.params().assign(set); !e.empty()) return lesson + ": " + e;
+    }
+  }
+  return {};
+}
+
+std::vector<Config> expand(const std::string& name, const Sweep& sweep, const Options& o) {
+  std::vector<Axis> axes = sweep.axes;
+  std::vector<std::string> scenes = sweep.scenes;
+  if (o.quick && !axes.empty()) {
+    // Every other value along the series, and always the last one.
+    std::vector<std::string> thinned;
+    const auto& v = axes[0].values;
+    for (size_t i = 0; i < v.size(); i += 2) thinned.push_back(v[i]);
+    if (thinned.back() != v.back()) thinned.push_back(v.back());
+    axes[0].values = thinned;
+  }
+  // The odometer over value indices, axes[0] fastest.
+  auto make = [&](const std::string& scene, const std::vector<size_t>& index) {
+    Config c{name, name, scene, {}, {}, index, {"scene=" + scene}};
+    for (size_t a = 0; a < axes.size(); ++a) {
+      c.axis_names.push_back(axes[a].name);
+      const auto [label, sets] = settingsOf(axes[a], axes[a].values[index[a]]);
+      c.values.push_back(label);
+      for (const std::string& set : sets) {
+        // A study's bundle picks the lesson that renders it.
+        if (set.rfind("lesson=", 0) == 0) {
+          c.lesson = set.substr(7);
+        } else {
+          c.sets.push_back(set);
+        }
+      }
+    }
+    c.sets.insert(c.sets.end(), sweep.fixed.begin(), sweep.fixed.end());
+    c.sets.insert(c.sets.end(), o.sets.begin(), o.sets.end());  // --set: last, so it wins
+    // The index into the full (unthinned) axis, so the plot's series keep their identity.
+    for (size_t a = 0; a < axes.size(); ++a) {
+      const auto& full = sweep.axes[a].values;
+      c.value_index[a] = static_cast<size_t>(
+          std::find_if(full.begin(), full.end(),
+                       [&](const std::string& v) {
+                         return settingsOf(sweep.axes[a], v).first == c.values[a];
+                       }) -
+          full.begin());
+    }
+    return c;
+  };
+  std::vector<Config> configs;
+  if (o.smoke) {
+    // Three tiny runs that still touch both ends of every axis and two scenes.
+    std::vector<size_t> first(axes.size(), 0), last(axes.size());
+    for (size_t a = 0; a < axes.size(); ++a) last[a] = axes[a].values.size() - 1;
+    std::vector<size_t> first_but_along = first;
+    if (!axes.empty()) first_but_along[0] = last[0];
+    configs.push_back(make(scenes.front(), first));
+    configs.push_back(make(scenes.front(), first_but_along));
+    configs.push_back(make(scenes.size() > 1 ? scenes[1] : scenes.front(), last));
+    return configs;
+  }
+  for (const auto& scene : scenes) {
+    std::vector<size_t> index(axes.size(), 0);
+    for (;;) {
+      configs.push_back(make(scene, index));
+      size_t a = 0;
+      while (a < axes.size() && ++index[a] == axes[a].values.size()) index[a++] = 0;
+      if (a == axes.size()) break;
+    }
+  }
+  return configs;
+}
+
+}  // namespace shadows::bench

@@ -1,0 +1,65 @@
+// The studies across lessons: sweeps whose bundles pick the lesson that renders them
+// (`lesson=NAME`). A lesson's own sweep is in its directory (NN_name/sweep.cpp).
+#include "bench.hpp"
+
+namespace shadows::bench {
+namespace {
+
+// What a shadow costs (issue 10): every lesson with a shadow.off baseline, at its defaults,
+// its frame against the same frame with no shadow work, interleaved in one run, with the map
+// cached (a static scene) and re-rendered every frame. A new lesson with the baseline joins by
+// itself; instrumentation (a `*.count` switch) is off, since it is not the shadow.
+Sweep shadowCostSweep() {
+  Axis lessons{"lesson_tag", {}};
+  for (const std::string& name : registeredLessons()) {
+    Runner probe(name, makeLesson(name), RunOptions{});  // parameters only, no GL
+    if (probe.params().find("shadow.off") == nullptr) continue;
+    std::string bundle = name.substr(0, 2) + ":lesson=" + name;
+    for (const Param& p : probe.params().all()) {
+      if (p.kind == ParamKind::Bool && p.name.ends_with(".count"))
+        bundle += " " + p.name + "=false";
+    }
+    lessons.values.push_back(bundle);
+  }
+  return {.scenes = {"torus_pyramid", "grazing", "dueling", "cubes"},
+          .axes = {{"shadow.off", {"false", "true"}}, lessons, {"shadow.cache", {"true", "false"}}},
+          .fixed = {"inset=false"},
+          .plot_metrics = {"vis_mae"},
+          .study = true};
+}
+
+// Seed 000's claim in numbers: error against the light frustum's far/near ratio, from about the
+// casters' own (6) to "expanded out considerably" (5000) and past it. Every point sets near and
+// far itself (no fit), every map is 1024², every technique keeps its own lesson's default bias
+// (04's back faces + (1.1, 4) for the depth textures).
+Sweep precisionStudy() {
+  return {.scenes = {"torus_pyramid", "dueling"},
+          .axes = {{"far_over_near",
+                    {"6:shadow.fit=false light.near=4 light.far=24",
+                     "20:shadow.fit=false light.near=1.2 light.far=24",
+                     "100:shadow.fit=false light.near=0.5 light.far=50",
+                     "1000:shadow.fit=false light.near=0.1 light.far=100",
+                     "5000:shadow.fit=false light.near=0.1 light.far=500",
+                     "100000:shadow.fit=false light.near=0.01 light.far=1000"}},
+                   {"map",
+                    {"8bit_projective:lesson=06_dual_texture_8bit",
+                     "8bit_linear:lesson=06_dual_texture_8bit map.encoding=linear",
+                     "16bit_two_digits:lesson=07_multidigit_16bit",
+                     "D16:lesson=04_bias_offset shadow.format=16",
+                     "D24:lesson=04_bias_offset shadow.format=24",
+                     "D32F:lesson=04_bias_offset shadow.format=32f"}}},
+          .fixed = {"shadow.cache=false", "inset=false", "shadow.size=1024"},
+          .plot_metrics = {"false_shadow_pct", "false_lit_pct"},
+          .plot_along = true,
+          .study = true};
+}
+
+}  // namespace
+
+std::map<std::string, Sweep> studies() {
+  // Built on first use, not at start-up: shadow_cost asks the lessons, which register
+  // themselves while the program starts.
+  return {{"precision_study", precisionStudy()}, {"shadow_cost", shadowCostSweep()}};
+}
+
+}  // namespace shadows::bench
