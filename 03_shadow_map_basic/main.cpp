@@ -34,20 +34,19 @@ class ShadowMapBasic final : public Lesson {
   }
 
   void init() override {
-    depth_program_ =
-        Program(lessonFile(LESSON_DIR, "depth.vert"), lessonFile(LESSON_DIR, "depth.frag"));
-    // scene.frag compiled per view, with the lookup or without it (shadow.off), when a
-    // setting first asks for it.
-    eye_programs_ =
-        ProgramVariants(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
+    // Pass 1's shaders are common/shaders/light_depth.vert and depth_only.frag (position only,
+    // no colour). Pass 2: common/shaders/shadow_coord.vert, then scene.frag compiled per view,
+    // with the lookup or without it (shadow.off), when a setting first asks for it.
+    eye_programs_ = ProgramVariants(commonShaderDir() / "shadow_coord.vert",
+                                    lessonFile(LESSON_DIR, "scene.frag"));
     raw_sampler_ = Sampler::depth(/*compare=*/false);
   }
 
   void render(Frame& f) override {
     // Pass 1: depth from the light, only when something it depends on changed (a static
     // frame renders no map). Only casters inside the light frustum are drawn into it.
-    if (map_.prepare(f)) map_.renderCasters(f, depth_program_);  // P_light * V_light * M * p
-    if (map_.drawDepthView(f)) return;  // Kilgard's second view: the depth map itself
+    if (map_.prepare(f)) map_.renderCasters(f);  // P_light * V_light * M * p
+    if (map_.drawDepthView(f)) return;           // Kilgard's second view: the depth map itself
 
     // Pass 2 from the eye (or, for Kilgard's first view, from the light): each fragment
     // gets (s, t, r, q) = B * P_light * V_light * M * p and textureProj compares r/q.
@@ -85,7 +84,6 @@ class ShadowMapBasic final : public Lesson {
  private:
   ShadowMap map_;
   FloatParam dimming_;
-  Program depth_program_;
   ProgramVariants eye_programs_;
   Sampler raw_sampler_;
 };

@@ -70,7 +70,7 @@ class BiasOffset final : public Lesson {
 
   void init() override {
     depth_program_ =
-        Program(lessonFile(LESSON_DIR, "depth.vert"), lessonFile(LESSON_DIR, "depth.frag"));
+        Program(lessonFile(LESSON_DIR, "depth.vert"), commonShaderDir() / "depth_only.frag");
     eye_programs_ =
         ProgramVariants(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
     // The same depth texture read raw (no compare), border 1 like the map: "nothing in front".

@@ -56,10 +56,8 @@ class PcfDithered final : public Lesson {
   }
 
   void init() override {
-    depth_program_ =
-        Program(lessonFile(LESSON_DIR, "depth.vert"), lessonFile(LESSON_DIR, "depth.frag"));
-    eye_programs_ =
-        ProgramVariants(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
+    eye_programs_ = ProgramVariants(commonShaderDir() / "shadow_coord.vert",
+                                    lessonFile(LESSON_DIR, "scene.frag"));
     // Two compare samplers for the same map: nearest (one texel per tap), linear (hw2x2).
     nearest_ = Sampler::depth(/*compare=*/true, GL_NEAREST);
     linear_ = Sampler::depth(/*compare=*/true, GL_LINEAR);
@@ -67,8 +65,7 @@ class PcfDithered final : public Lesson {
   }
   void render(Frame& f) override {
     // Lesson 04's default bias: back faces into the map, plus glPolygonOffset.
-    if (map_.prepare(f))
-      map_.renderCasters(f, depth_program_, ShadowMap::backFacesBias(factor_(), units_()));
+    if (map_.prepare(f)) map_.renderCasters(f, ShadowMap::backFacesBias(factor_(), units_()));
     const pcf::Mode mode = mode_();
     const float radius = radius_();
     const int grid = pcf::gridSide(taps_());
@@ -182,7 +179,6 @@ class PcfDithered final : public Lesson {
   }
 
   ShadowMap map_;
-  Program depth_program_;
   // scene.frag + pcf.glsl compiled for one filter, view, early out, counting and shadow.off,
   // when a setting first asks for it: a frame runs only its own kernel.
   ProgramVariants eye_programs_;

@@ -95,19 +95,8 @@ class DualTexture8bit final : public Lesson {
   }
 
   void drawPasses(Frame& f) {
-    if (map_.light().off()) {  // the baseline: one lit pass, no map, no lookup
-      auto timing = f.measure.pass("pass1");
-      f.drawObjects(passes_[3], Objects::All);
-      return;
-    }
-    {
-      // Pass 1 lays the depth pass 2 must equal; switched off, it still does, in no colour.
-      auto timing = f.measure.pass("pass1");
-      PassState dimmed;
-      dimmed.color_write = dimmed_();
-      dimmed.apply();
-      f.drawObjects(passes_[1], Objects::All);
-    }
+    // Pass 1 lays the depth pass 2 must equal (shadow.off: one lit pass, no map, no lookup).
+    if (!map_.drawBasePass(f, passes_[1], passes_[3], dimmed_())) return;
     lit_fragments_ = 0;
     if (!lit_()) return;
     auto timing = f.measure.pass("pass2");

@@ -91,19 +91,8 @@ class MultiDigit16bit final : public Lesson {
 
  private:
   void drawPasses(Frame& f, bool additive) {
-    if (map_.light().off()) {  // the baseline: one lit pass, no map, no lookup
-      auto timing = f.measure.pass("pass1");
-      f.drawObjects(passes_[3], Objects::All);
-      return;
-    }
-    {
-      // Pass 1 lays the depth passes 2 and 3 must equal; switched off, in no colour.
-      auto timing = f.measure.pass("pass1");
-      PassState dimmed;
-      dimmed.color_write = dimmed_();
-      dimmed.apply();
-      f.drawObjects(passes_[0], Objects::All);
-    }
+    // Pass 1 lays the depth passes 2 and 3 must equal (shadow.off: one lit pass, no lookup).
+    if (!map_.drawBasePass(f, passes_[0], passes_[3], dimmed_())) return;
     PassState lit;
     lit.depth_func = GL_EQUAL;
     lit.depth_write = false;

@@ -56,14 +56,12 @@ class Atmospherics final : public Lesson {
   }
 
   void init() override {
-    const auto common = commonShaderDir();
-    depth_ = Program(common / "light_depth.vert", common / "depth_only.frag");
+    glGenVertexArrays(1, &empty_vao_);  // slices need no vertices: gl_VertexID, gl_InstanceID
     // Compiled per shadow.off (the baseline: no lookup) and air.early_reject, on first use.
     room_ =
         ProgramVariants(lessonFile(LESSON_DIR, "room.vert"), lessonFile(LESSON_DIR, "room.frag"));
     slice_programs_ =
         ProgramVariants(lessonFile(LESSON_DIR, "slice.vert"), lessonFile(LESSON_DIR, "slice.frag"));
-    glGenVertexArrays(1, &empty_vao_);
   }
   ~Atmospherics() override {
     if (empty_vao_ != 0) glDeleteVertexArrays(1, &empty_vao_);
@@ -72,7 +70,7 @@ class Atmospherics final : public Lesson {
   void render(Frame& f) override {
     loadSpot(image_(), falloff_());
     // 1. The shadow map, lesson 04's default bias (back faces + glPolygonOffset(1.1, 4)).
-    if (map_.prepare(f)) map_.renderCasters(f, depth_, ShadowMap::backFacesBias(1.1f, 4.0f));
+    if (map_.prepare(f)) map_.renderCasters(f, ShadowMap::backFacesBias(1.1f, 4.0f));
     if (map_.drawDepthView(f)) return;
 
     const glm::mat4 cone = coneOfLight(f);
@@ -259,7 +257,6 @@ class Atmospherics final : public Lesson {
   }
 
   ShadowMap map_;
-  Program depth_;
   ProgramVariants room_, slice_programs_;
   IntParam slices_;
   FloatParam density_, falloff_, dimming_;

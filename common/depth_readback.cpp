@@ -293,6 +293,20 @@ void DepthReadback::bindForLookup(const Frame& f, const Program& program) const 
   program.set("uTexgenBias", texgenBias(f));
 }
 
+bool DepthReadback::drawBasePass(Frame& f, const Program& dimmed, const Program& unshadowed,
+                                 bool color) const {
+  auto timing = f.measure.pass("pass1");
+  if (light_.off()) {
+    f.drawObjects(unshadowed, Objects::All);
+    return false;
+  }
+  PassState state;
+  state.color_write = color;
+  state.apply();
+  f.drawObjects(dimmed, Objects::All);
+  return true;
+}
+
 void DepthReadback::drawInset(const Frame& frame, bool fullscreen) const {
   if ((!inset_ || light_.off()) && !fullscreen) return;
   const Texture& map = lookupTexture();

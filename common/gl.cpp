@@ -49,17 +49,11 @@ Sampler Sampler::depth(bool compare, GLenum filter) {
 }
 
 Texture Texture::depth(int width, int height, int bits) {
-  Texture t;
-  GLuint id = 0;
-  glGenTextures(1, &id);
-  t.name_ = GlName<deleteTexture>(id);
-  t.width_ = width;
-  t.height_ = height;
+  Texture t = create(GL_TEXTURE_2D, width, height);
   const GLenum internal = bits == 16   ? GL_DEPTH_COMPONENT16
                           : bits == 24 ? GL_DEPTH_COMPONENT24
                                        : GL_DEPTH_COMPONENT32F;
   const GLenum type = bits == 32 ? GL_FLOAT : GL_UNSIGNED_INT;
-  glBindTexture(GL_TEXTURE_2D, id);
   glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internal), width, height, 0, GL_DEPTH_COMPONENT,
                type, nullptr);
   // Outside the map counts as "nothing in front": depth 1 at the border.
@@ -72,13 +66,7 @@ Texture Texture::depth(int width, int height, int bits) {
 }
 
 Texture Texture::depthStencil(int width, int height) {
-  Texture t;
-  GLuint id = 0;
-  glGenTextures(1, &id);
-  t.name_ = GlName<deleteTexture>(id);
-  t.width_ = width;
-  t.height_ = height;
-  glBindTexture(GL_TEXTURE_2D, id);
+  Texture t = create(GL_TEXTURE_2D, width, height);
   glTexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH24_STENCIL8, width, height);
   return t;
 }

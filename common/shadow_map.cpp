@@ -48,6 +48,14 @@ void ShadowMap::renderCasters(Frame& f, const Program& depthProgram, const PassS
   PassState{}.apply();
 }
 
+void ShadowMap::renderCasters(Frame& f, const PassState& state) {
+  if (depth_only_.id() == 0) {
+    depth_only_ =
+        Program(commonShaderDir() / "light_depth.vert", commonShaderDir() / "depth_only.frag");
+  }
+  renderCasters(f, depth_only_, state);
+}
+
 bool ShadowMap::drawDepthView(const Frame& frame) const {
   if (frame.mode != "light_depth") return false;
   frame.clearTarget(glm::vec3(0.0f));

@@ -32,7 +32,9 @@ class ShadowMap {
   // Pass 1, timed as "shadow": beginRender, then `state` (a bias), then the casters inside the
   // light frustum (the others are culled and counted) with `depthProgram`, whose
   // uLightViewProjection = P_light * V_light is set here; leaves the default state behind.
+  // Without a program: common/shaders/light_depth.vert + depth_only.frag, position only.
   void renderCasters(Frame& frame, const Program& depthProgram, const PassState& state = {}) const;
+  void renderCasters(Frame& frame, const PassState& state = {});
   // Kilgard's "depth buffer from the light's point of view": when frame.mode is
   // "light_depth", draws the map over the whole target and returns true.
   bool drawDepthView(const Frame& frame) const;
@@ -62,6 +64,7 @@ class ShadowMap {
   glm::ivec2 size_{0};
   int bits_ = 0;
   GLenum filter_ = GL_NEAREST;
+  Program depth_only_;  // renderCasters' own, compiled on first use
   ChoiceParam<> format_, filter_param_;
   BoolParam inset_;
 };

@@ -1,6 +1,0 @@
-#version 330 core
-// Pass 1: depth from the light's point of view. Nothing but the position is needed.
-layout(location = 0) in vec3 aPosition;
-uniform mat4 uModel;
-uniform mat4 uLightViewProjection;  // P_light * V_light
-void main() { gl_Position = uLightViewProjection * uModel * vec4(aPosition, 1.0); }
