@@ -271,7 +271,9 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
     measure_->setEnabled(timed);
     showImage(frame, frame.mode == "truth" ? truth_image_ : error_image_);
   } else {
+    ProgramVariants::takeUsed();  // only this frame's
     lesson_->render(frame);
+    measure_->variants(ProgramVariants::takeUsed());
     light_frustum_ = frame.light_view_projection;
     truth_area_radius_ = frame.truth_area_radius;
     medium_ = frame.medium;

@@ -232,6 +232,7 @@ class Runner {
   Scene scene_;
   std::vector<glm::mat4> preset_models_;
   std::unique_ptr<Measure> measure_;
+  long long compiled_at_start_ = ProgramVariants::compiledTotal();
   std::unique_ptr<Gpu> gpu_;
   std::unique_ptr<Truth> truth_;
   ErrorState error_;

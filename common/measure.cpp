@@ -40,6 +40,7 @@ Measure::Measure() {
 void Measure::beginFrame() {
   work_.clear();
   counts_.clear();
+  variants_.clear();
   if (!enabled_) return;
   glFinish();
   frame_start_ = std::chrono::steady_clock::now();
@@ -51,6 +52,7 @@ void Measure::endFrame() {
   frame_ms_.push_back(msSince(frame_start_));
   last_work_ = work_;
   last_counts_ = counts_;
+  last_variants_ = variants_;
 }
 
 Measure::Pass::Pass(Measure* owner, std::string name) : owner_(owner), name_(std::move(name)) {

@@ -62,6 +62,9 @@ class Measure {
     return enabled_ && it != work_.end() ? &it->second : nullptr;
   }
   const std::map<std::string, long long>& lastFrameCounts() const { return last_counts_; }
+  // The shader variants the frame ran (ProgramVariants::takeUsed), kept like the counts.
+  void variants(std::vector<std::string> used) { variants_ = std::move(used); }
+  const std::vector<std::string>& lastFrameVariants() const { return last_variants_; }
   double lastFrameMs() const { return frame_ms_.empty() ? 0.0 : frame_ms_.back(); }
 
  private:
@@ -72,6 +75,7 @@ class Measure {
   std::map<std::string, std::vector<double>> pass_ms_;
   std::map<std::string, PassWork> work_, last_work_;
   std::map<std::string, long long> counts_, last_counts_;
+  std::vector<std::string> variants_, last_variants_;
 };
 
 double median(std::vector<double> values);

@@ -48,6 +48,11 @@ void Runner::writeReport(JsonWriter& json) {
   for (const auto& [name, count] : measure_->lastFrameCounts()) json.value(name, count);
   json.endObject();
   json.value("gl_errors", glErrors());
+  // Which compiled variant each pass ran, and how many programs this run compiled.
+  json.beginArray("shader_variants");
+  for (const std::string& used : measure_->lastFrameVariants()) json.value("", used);
+  json.endArray();
+  json.value("shader_variants_compiled", ProgramVariants::compiledTotal() - compiled_at_start_);
   lesson_->report(json);
   if (error_.valid) {
     const ErrorMetrics& e = error_.metrics;

@@ -1,9 +1,11 @@
 // Shader programs from files: #include resolved, compile errors as file:line, variants
 // selected by #defines and compiled on first use.
+#include <algorithm>
 #include <fstream>
 #include <glm/gtc/type_ptr.hpp>
 #include <regex>
 #include <sstream>
+#include <utility>
 
 #include "program.hpp"
 
@@ -144,20 +146,43 @@ void Program::use() const {
   glUseProgram(name_.id());
 }
 
+namespace {
+std::vector<std::string> g_used;
+long long g_compiled = 0;
+}  // namespace
+
 const Program& ProgramVariants::get(std::initializer_list<std::vector<std::string>> parts) {
   std::vector<std::string> defines;
-  std::string key;
+  std::string key, selected;
   for (const auto& part : parts) {
     for (const std::string& d : part) {
       defines.push_back(d);
       key += d + ";";
     }
+    // A part's last line is what it selects ("PCF_MODE PCF_MODE_GRID"; the lines before it
+    // name the choices).
+    if (!part.empty()) {
+      std::string line = part.back();
+      std::replace(line.begin(), line.end(), ' ', '=');
+      selected += (selected.empty() ? "" : ", ") + line;
+    }
   }
   last_key_ = key;
+  g_used.push_back(fragment_.filename().string() + ": " + selected);
   auto it = programs_.find(key);
-  if (it == programs_.end())
+  if (it == programs_.end()) {
     it = programs_.emplace(key, Program(vertex_, fragment_, defines)).first;
+    ++g_compiled;
+  }
   return it->second;
+}
+
+std::vector<std::string> ProgramVariants::takeUsed() {
+  return std::exchange(g_used, {});
+}
+
+long long ProgramVariants::compiledTotal() {
+  return g_compiled;
 }
 
 GLint Program::location(const std::string& name) const {

@@ -50,6 +50,11 @@ class ProgramVariants {
   // frame's choice of variant, for the report and the tests).
   size_t compiled() const { return programs_.size(); }
   const std::string& lastKey() const { return last_key_; }
+  // Every get() since the last call, as "scene.frag: PCF_MODE=PCF_MODE_GRID, ...": the runner
+  // records which variant each pass of a frame ran (the report's shader_variants).
+  static std::vector<std::string> takeUsed();
+  // Programs compiled by every ProgramVariants so far (the report's shader_variants_compiled).
+  static long long compiledTotal();
 
  private:
   std::filesystem::path vertex_, fragment_;

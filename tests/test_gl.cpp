@@ -102,5 +102,30 @@ TEST_F(GlTest, IncompleteFramebufferIsReported) {
   EXPECT_THROW(empty.check(), GlFailure);
 }
 
+// One program per set of defines, compiled when first asked for and then reused.
+TEST_F(GlTest, VariantsCompileOncePerSetOfDefinesAndSayWhichRan) {
+  const auto frag = write("v.frag",
+                          "#version 330 core\nout vec4 c;\nvoid main() {\n#if MODE == MODE_B\n"
+                          "  c = vec4(1.0);\n#else\n  c = vec4(0.0);\n#endif\n}\n");
+  ProgramVariants variants(write("v.vert", kVertex), frag);
+  const long long before = ProgramVariants::compiledTotal();
+  ProgramVariants::takeUsed();
+  const std::vector<std::string> a = {"MODE_A 0", "MODE_B 1", "MODE MODE_A"};
+  const std::vector<std::string> b = {"MODE_A 0", "MODE_B 1", "MODE MODE_B"};
+  const GLuint first = variants.get({a, define("EXTRA", 1)}).id();
+  EXPECT_EQ(variants.get({a, define("EXTRA", 1)}).id(), first) << "cached, not recompiled";
+  const GLuint other = variants.get({b, define("EXTRA", 1)}).id();
+  EXPECT_NE(other, first);
+  EXPECT_EQ(variants.get({a, define("EXTRA", 1)}).id(), first);
+  EXPECT_EQ(variants.compiled(), 2u);
+  EXPECT_EQ(ProgramVariants::compiledTotal() - before, 2);
+  EXPECT_EQ(
+      ProgramVariants::takeUsed(),
+      (std::vector<std::string>{"v.frag: MODE=MODE_A, EXTRA=1", "v.frag: MODE=MODE_A, EXTRA=1",
+                                "v.frag: MODE=MODE_B, EXTRA=1", "v.frag: MODE=MODE_A, EXTRA=1"}));
+  EXPECT_TRUE(ProgramVariants::takeUsed().empty());
+  EXPECT_EQ(GlErrorLog::poll(), 0);
+}
+
 }  // namespace
 }  // namespace shadows

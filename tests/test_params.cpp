@@ -182,5 +182,45 @@ TEST(StringParam, ACheckRefusesWithOneLineAndChangesNothing) {
       << "the kind's own parsing comes first";
 }
 
+// Handles: what a lesson keeps from declare() reads the value in force, with its type.
+TEST_F(ParamsTest, HandlesReadTheValueInForceAndRefuseTheWrongKind) {
+  const IntParam size = params.at("shadow.size");
+  const FloatParam dimming = params.at("dimming");
+  const BoolParam inset = params.at("inset");
+  const Vec3Param light = params.at("light.pos");
+  enum class Format { D16, D24, D32F };
+  const ChoiceParam<Format> format = params.at("shadow.format");
+  ASSERT_EQ(params.set("shadow.size", "512"), "");
+  ASSERT_EQ(params.set("dimming", "0.25"), "");
+  ASSERT_EQ(params.set("inset", "false"), "");
+  ASSERT_EQ(params.set("light.pos", "4,5,6"), "");
+  ASSERT_EQ(params.set("shadow.format", "32f"), "");
+  EXPECT_EQ(size(), 512);
+  EXPECT_FLOAT_EQ(dimming(), 0.25f);
+  EXPECT_FALSE(inset());
+  EXPECT_EQ(light(), glm::vec3(4, 5, 6));
+  EXPECT_EQ(format(), Format::D32F);
+  EXPECT_EQ(format.name(), "32f");
+  EXPECT_THROW(FloatParam{params.at("shadow.size")}, std::logic_error);
+  EXPECT_THROW(ChoiceParam<>{params.at("inset")}, std::logic_error);
+  EXPECT_THROW(BoolParam{params.at("dimming")}, std::logic_error);
+}
+
+// A choice reaches a shader as named #defines from its one declaration.
+TEST_F(ParamsTest, ChoicesAndBoolsBecomeNamedDefines) {
+  ASSERT_EQ(params.set("shadow.format", "32f"), "");
+  EXPECT_EQ(params.at("shadow.format").defines(),
+            (std::vector<std::string>{"SHADOW_FORMAT_16 0", "SHADOW_FORMAT_24 1",
+                                      "SHADOW_FORMAT_32F 2", "SHADOW_FORMAT SHADOW_FORMAT_32F"}));
+  EXPECT_EQ(params.at("inset").defines(), std::vector<std::string>{"INSET 1"});
+  ASSERT_EQ(params.set("inset", "false"), "");
+  EXPECT_EQ(params.at("inset").defines(), std::vector<std::string>{"INSET 0"});
+  EXPECT_EQ(params.at("shadow.size").defines(), std::vector<std::string>{"SHADOW_SIZE 1024"});
+  EXPECT_THROW(params.at("dimming").defines(), std::logic_error) << "a float is no variant";
+  EXPECT_EQ(
+      choiceDefines("view", {"shaded", "light_depth"}, "light_depth"),
+      (std::vector<std::string>{"VIEW_SHADED 0", "VIEW_LIGHT_DEPTH 1", "VIEW VIEW_LIGHT_DEPTH"}));
+}
+
 }  // namespace
 }  // namespace shadows
