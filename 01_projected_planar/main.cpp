@@ -71,7 +71,7 @@ class ProjectedPlanar final : public Lesson {
     // 1. The scene, lit (slide 17: "render scene, full lighting"). The receiver comes last
     //    and marks stencil = 1 where it is the visible surface (slide 19).
     {
-      auto timing = f.measure.pass("scene");
+      auto timing = f.measure.pass("scene", /*countPassed=*/true);
       f.clearTarget(mode == 0 ? Frame::kSky : glm::vec3(0.0f));
       scene_program_.set("uViewProjection", f.projection * f.view);
       scene_program_.set("uMode", mode);

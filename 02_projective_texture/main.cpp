@@ -117,7 +117,7 @@ class ProjectiveTexture final : public Lesson {
     f.setLightingUniforms(program_, 0.0f);
 
     {  // Pass 1: ambient light on everything (or the texcoords view).
-      auto timing = f.measure.pass("ambient");
+      auto timing = f.measure.pass("ambient", /*countPassed=*/true);
       program_.set("uPass", 0);
       f.drawObjects(program_, Objects::All);
     }

@@ -50,7 +50,7 @@ class ShadowMapBasic final : public Lesson {
 
     // Pass 2 from the eye (or, for Kilgard's first view, from the light): each fragment
     // gets (s, t, r, q) = B * P_light * V_light * M * p and textureProj compares r/q.
-    auto timing = f.measure.pass("eye");
+    auto timing = f.measure.pass("eye", /*countPassed=*/true);
     f.clearTarget();
     map_.texture().bind(0);  // as sampler2DShadow
     map_.texture().bind(1);  // the same texture read raw, for the debug views

@@ -96,7 +96,7 @@ class BiasOffset final : public Lesson {
     }
     if (map_.drawDepthView(f)) return;
 
-    auto timing = f.measure.pass("eye");
+    auto timing = f.measure.pass("eye", /*countPassed=*/true);
     f.clearTarget();
     map_.texture().bind(0);  // sampler2DShadow
     map_.texture().bind(1);  // raw, through raw_sampler_

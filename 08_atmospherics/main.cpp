@@ -78,7 +78,7 @@ class Atmospherics final : public Lesson {
 
     // 2 and 3. The surfaces, lit through the spot texture and the shadow map.
     {
-      auto timing = f.measure.pass("surfaces");
+      auto timing = f.measure.pass("surfaces", /*countPassed=*/true);
       f.clearTarget(f.mode == "air" || f.mode == "visibility" ? glm::vec3(0.0f)
                                                               : glm::vec3(0.02f, 0.02f, 0.03f));
       bindLightTextures();

@@ -295,7 +295,7 @@ void DepthReadback::bindForLookup(const Frame& f, const Program& program) const 
 
 bool DepthReadback::drawBasePass(Frame& f, const Program& dimmed, const Program& unshadowed,
                                  bool color) const {
-  auto timing = f.measure.pass("pass1");
+  auto timing = f.measure.pass("pass1", /*countPassed=*/true);
   if (light_.off()) {
     f.drawObjects(unshadowed, Objects::All);
     return false;

@@ -91,6 +91,7 @@ const ErrorState& Runner::measureError() {
   glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   const Light light = currentLight();
   Frame frame(*this, params_, scene_, *measure_, light);
+  frame.eye = params_.at("camera.pos").v();  // drawn in the order the lesson's eye pass was
   // The very camera the lesson drew with, or truth and picture would not line up.
   gpu_->gbuffer.set("uViewProjection", cameraProjection(w, h) * cameraView());
   gpu_->gbuffer.set("uHasLightFrustum", light_frustum_ ? 1 : 0);
@@ -117,6 +118,10 @@ const ErrorState& Runner::measureError() {
   const std::vector<float> weight = Truth::facingWeight(surface, truth_light);
 
   error_.metrics = compareVisibility(rendered, truth, weight);
+  // Every surface the eye sees writes its normal, counted or not; the sky keeps the clear 0.
+  error_.metrics.covered_pixels =
+      std::count_if(surface.normal.begin(), surface.normal.end(),
+                    [](const glm::vec4& normal) { return glm::dot(normal, normal) > 0.0f; });
   error_.metrics.truth = light.directional ? "directional" : "point";
   if (truth_area_radius_ > 0.0f) {
     char name[64];

@@ -20,6 +20,7 @@
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <map>
+#include <numeric>
 
 namespace shadows {
 
@@ -107,7 +108,24 @@ void Runner::drawImageInset(const Frame& frame, const Texture& image, bool fulls
 void Runner::drawObjects(const Frame& frame, const Program& program, Objects which,
                          const glm::mat4* cull) const {
   program.use();
-  for (size_t i = 0; i < scene_.objects.size(); ++i) {
+  std::vector<size_t> order(scene_.objects.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  // The eye's view, drawn so the depth test rejects hidden fragments before they are shaded:
+  // solids front to back, then the one-sided planes they stand on (which cover most of the
+  // screen and lie behind them); back faces of solids culled, as they are never seen from
+  // outside. The light's passes keep the scene's order and their own culling.
+  const bool eye_view = which == Objects::All;
+  const bool cull_solids = eye_view && glIsEnabled(GL_CULL_FACE) == GL_FALSE;
+  if (cull_solids) glCullFace(GL_BACK);
+  if (eye_view) {
+    const auto key = [&](size_t i) {
+      const SceneObject& o = scene_.objects[i];
+      return std::make_pair(!o.caster, glm::distance(frame.eye, o.worldBounds().center()));
+    };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return key(a) < key(b); });
+  }
+  for (const size_t i : order) {
     const SceneObject& object = scene_.objects[i];
     const Light& l = frame.light;
     if (which == Objects::Casters && !object.castsFrom(l.position, l.directional, l.direction)) {
@@ -121,8 +139,11 @@ void Runner::drawObjects(const Frame& frame, const Program& program, Objects whi
         continue;
       }
     }
+    // Every caster is a closed solid wound counter-clockwise from outside (tested).
+    if (cull_solids) object.caster ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
     drawObject(program, i);
   }
+  if (cull_solids) glDisable(GL_CULL_FACE);
 }
 
 void Runner::drawObject(const Program& program, size_t index) const {

@@ -32,9 +32,10 @@ double median(std::vector<double> values) {
 }
 
 Measure::Measure() {
-  GLuint id = 0;
-  glGenQueries(1, &id);
-  query_ = GlName<deleteQuery>(id);
+  GLuint ids[2] = {0, 0};
+  glGenQueries(2, ids);
+  query_ = GlName<deleteQuery>(ids[0]);
+  passed_query_ = GlName<deleteQuery>(ids[1]);
 }
 
 void Measure::beginFrame() {
@@ -55,17 +56,20 @@ void Measure::endFrame() {
   last_variants_ = variants_;
 }
 
-Measure::Pass::Pass(Measure* owner, std::string name) : owner_(owner), name_(std::move(name)) {
+Measure::Pass::Pass(Measure* owner, std::string name, bool countPassed)
+    : owner_(owner), name_(std::move(name)), count_passed_(countPassed) {
   if (owner_ == nullptr) return;
   glFinish();
   draws_at_start_ = drawCallsSoFar();
   glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, owner_->query_.id());
+  if (count_passed_) glBeginQuery(GL_SAMPLES_PASSED, owner_->passed_query_.id());
   start_ = std::chrono::steady_clock::now();
 }
 
 Measure::Pass::~Pass() {
   if (owner_ == nullptr) return;
   glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+  if (count_passed_) glEndQuery(GL_SAMPLES_PASSED);
   glFinish();
   owner_->pass_ms_[name_].push_back(msSince(start_));
   GLuint64 fragments = 0;
@@ -73,6 +77,11 @@ Measure::Pass::~Pass() {
   PassWork& work = owner_->work_[name_];
   work.draw_calls += drawCallsSoFar() - draws_at_start_;
   work.fragment_invocations += static_cast<long long>(fragments);
+  if (count_passed_) {
+    GLuint64 passed = 0;
+    glGetQueryObjectui64v(owner_->passed_query_.id(), GL_QUERY_RESULT, &passed);
+    work.fragments_passed = std::max(work.fragments_passed, 0LL) + static_cast<long long>(passed);
+  }
 }
 
 void Measure::count(const std::string& name, long long amount) {

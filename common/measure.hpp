@@ -14,7 +14,11 @@ namespace shadows {
 
 struct PassWork {
   long long draw_calls = 0;
+  // llvmpipe counts every rasterized fragment here, before the depth test, early or not.
   long long fragment_invocations = 0;
+  // GL_SAMPLES_PASSED, for passes that ask (-1 otherwise): the fragments that passed the depth
+  // test; with the tests early, the only ones whose shading ran.
+  long long fragments_passed = -1;
 };
 
 // Every draw the lessons issue goes through here, so passes can count them.
@@ -33,7 +37,7 @@ class Measure {
 
   class Pass {
    public:
-    Pass(Measure* owner, std::string name);
+    Pass(Measure* owner, std::string name, bool countPassed);
     Pass(Pass&&) = delete;
     ~Pass();
 
@@ -42,9 +46,13 @@ class Measure {
     std::string name_;
     std::chrono::steady_clock::time_point start_;
     long long draws_at_start_ = 0;
+    bool count_passed_ = false;
   };
-  // RAII: `auto timing = measure.pass("shadow");` around one pass.
-  [[nodiscard]] Pass pass(const std::string& name) { return Pass(enabled_ ? this : nullptr, name); }
+  // RAII: `auto timing = measure.pass("shadow");` around one pass. With `countPassed` it also
+  // counts fragments_passed (a pass that runs its own GL_SAMPLES_PASSED query must not).
+  [[nodiscard]] Pass pass(const std::string& name, bool countPassed = false) {
+    return Pass(enabled_ ? this : nullptr, name, countPassed);
+  }
 
   // An event counter for this frame, e.g. "shadow_map_renders".
   void count(const std::string& name, long long amount = 1);
@@ -69,7 +77,7 @@ class Measure {
 
  private:
   bool enabled_ = true;
-  GlName<deleteQuery> query_;
+  GlName<deleteQuery> query_, passed_query_;
   std::chrono::steady_clock::time_point frame_start_;
   std::vector<double> frame_ms_;
   std::map<std::string, std::vector<double>> pass_ms_;

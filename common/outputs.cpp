@@ -43,6 +43,7 @@ void Runner::writeReport(JsonWriter& json) {
     json.beginObject(pass);
     json.value("draw_calls", work.draw_calls);
     json.value("fragment_invocations", work.fragment_invocations);
+    if (work.fragments_passed >= 0) json.value("fragments_passed", work.fragments_passed);
     json.endObject();
   }
   for (const auto& [name, count] : measure_->lastFrameCounts()) json.value(name, count);
@@ -64,6 +65,7 @@ void Runner::writeReport(JsonWriter& json) {
     json.value("shade_mae", e.shade_mae);
     json.value("nonfinite_pixels", e.nonfinite_pixels);
     json.value("counted_pixels", e.counted_pixels);
+    json.value("covered_pixels", e.covered_pixels);
     if (e.air.valid) {
       json.value("air_mae", e.air.mae);
       json.value("air_rel_rmse", e.air.rel_rmse);

@@ -100,6 +100,9 @@ struct ErrorMetrics {
   double shade_mae = 0.0;          // the same weighted by N.L
   long long nonfinite_pixels = 0;  // NaN or Inf in rendered, over all pixels
   long long counted_pixels = 0;
+  // Pixels that show any surface (the sky excluded), counted or not: what an eye pass with no
+  // overdraw would shade (the report's fragments_passed is measured against it).
+  long long covered_pixels = 0;
   AirMetrics air;  // lesson 08: the air light against Truth::airLight (valid only there)
 };
 

@@ -113,11 +113,12 @@ TEST(Lesson04, ALightBelowTheFloorIsShadowedByTheFloor) {
 }
 
 TEST(Lesson04, TheInsideOfAnObjectIsNotCounted) {
-  // The eye inside the sphere sees only its inner faces, which face away: nothing to count,
-  // where counting them read 100 % false lit.
+  // The eye inside the sphere: its inner faces face away and are culled (counting them read
+  // 100 % false lit), so the eye sees the scene beyond, and rendering and truth agree there.
   const ErrorMetrics e = measure({"camera.pos=0.6,0.45,1.6", "camera.target=0,0.5,0"});
-  EXPECT_EQ(e.counted_pixels, 0);
-  EXPECT_EQ(e.false_lit_pct, 0.0);
+  EXPECT_GT(e.counted_pixels, 1000);
+  EXPECT_LT(e.false_lit_pct, 0.2);
+  EXPECT_LT(e.false_shadow_pct, 0.2);
 }
 
 TEST(Lesson04, BothFailuresAreReachable) {
