@@ -112,10 +112,12 @@ void Runner::drawObjects(const Frame& frame, const Program& program, Objects whi
   std::iota(order.begin(), order.end(), size_t{0});
   // The eye's view, drawn so the depth test rejects hidden fragments before they are shaded:
   // solids front to back, then the one-sided planes they stand on (which cover most of the
-  // screen and lie behind them); back faces of solids culled, as they are never seen from
-  // outside. The light's passes keep the scene's order and their own culling.
+  // screen and lie behind them).
   const bool eye_view = which == Objects::All;
-  const bool cull_solids = eye_view && glIsEnabled(GL_CULL_FACE) == GL_FALSE;
+  // A closed solid's nearest surface, from the eye or from the light, is always a face turned
+  // toward it: its back faces can only fail the depth test, and skipping them changes no
+  // depth. Unless the pass culls for its own reasons (a bias that keeps only back faces).
+  const bool cull_solids = glIsEnabled(GL_CULL_FACE) == GL_FALSE;
   if (cull_solids) glCullFace(GL_BACK);
   if (eye_view) {
     const auto key = [&](size_t i) {
