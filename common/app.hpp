@@ -185,22 +185,23 @@ class Runner {
   // Runs the whole program (window or headless) and returns the exit code.
   int run();
 
-  // For Frame helpers.
-  void drawObjects(const Frame& frame, const Program& program, Objects which,
-                   const glm::mat4* cull) const;
-  void drawObject(const Program& program, size_t index) const;
   // Moves one scene object (lesson 01 tilts its receiver plane). Everything follows it: the
   // lesson's draws, the runner's geometry pass and the ray-traced truth, which is rebuilt
   // when the matrix really changed. A scene preset change puts the preset's matrix back.
   void setObjectModel(size_t index, const glm::mat4& model);
   // The object's matrix as the scene preset placed it, before any setObjectModel.
   const glm::mat4& presetModel(size_t index) const { return preset_models_.at(index); }
+ private:
+  // What a Frame draws with: the scene's meshes and the runner's inset programs.
+  friend struct Frame;
+  void drawObjects(const Frame& frame, const Program& program, Objects which,
+                   const glm::mat4* cull) const;
+  void drawObject(const Program& program, size_t index) const;
   void drawInset(const Frame& frame, const Texture& depth, float near, float far, bool perspective,
                  bool fullscreen) const;
   void drawImageInset(const Frame& frame, const Texture& image, bool fullscreen) const;
   void drawFullscreen(const Frame& frame, const Program& program, bool inset) const;
 
- private:
   struct Gpu;
   void declareShared();
   static void declareSharedInto(Params& params);
