@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -164,6 +165,12 @@ class Runner {
   void setMouse(glm::vec2 position, bool leftDown);
   // Computes visibility, truth and metrics for the current parameters.
   const ErrorState& measureError();
+  // The same off the frame's critical path (the window): begin renders what the truth needs
+  // (a few ms of GL) and traces it on a worker thread; poll installs the result once it is
+  // there (true then). One job at a time; measureError() waits for a running one.
+  void beginErrorMeasure();
+  bool pollErrorMeasure();
+  bool errorMeasureRunning() const { return truth_job_.valid(); }
   // The last error measured (may be stale while sliders move): lessons name it in their panel.
   const ErrorState& lastError() const { return error_; }
   Image readImage() const;
@@ -191,6 +198,7 @@ class Runner {
   void setObjectModel(size_t index, const glm::mat4& model);
   // The object's matrix as the scene preset placed it, before any setObjectModel.
   const glm::mat4& presetModel(size_t index) const { return preset_models_.at(index); }
+
  private:
   // What a Frame draws with: the scene's meshes and the runner's inset programs.
   friend struct Frame;
@@ -235,7 +243,7 @@ class Runner {
   std::unique_ptr<Measure> measure_;
   long long compiled_at_start_ = ProgramVariants::compiledTotal();
   std::unique_ptr<Gpu> gpu_;
-  std::unique_ptr<Truth> truth_;
+  std::shared_ptr<const Truth> truth_;  // shared with a job tracing on another thread
   ErrorState error_;
   std::string error_key_;
   Image error_image_, truth_image_;
@@ -243,7 +251,18 @@ class Runner {
   float truth_area_radius_ = 0.0f;
   std::optional<AirMedium> medium_;
   Truth::AirResult air_truth_;
-  void measureAir(const SurfaceBuffer& surface);
+  struct TruthInputs;
+  struct TruthResult {  // what a traced truth installs
+    std::string key;
+    ErrorMetrics metrics;
+    Image error_image, truth_image;
+    Truth::AirResult air;
+    std::shared_ptr<const Truth> truth;
+  };
+  TruthInputs gatherTruthInputs();                    // render thread
+  static TruthResult traceTruth(TruthInputs inputs);  // any thread: no GL, no runner state
+  void installTruth(TruthResult result);
+  std::future<TruthResult> truth_job_;
   glm::vec2 mouse_{-1.0f};
   bool mouse_down_ = false;
   double last_time_ = 0.0;

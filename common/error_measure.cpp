@@ -2,6 +2,7 @@
 #include "app.hpp"
 
 #include "runner_gpu.hpp"
+#include "spotlight.hpp"
 
 #include "context.hpp"
 #include "json.hpp"
@@ -60,27 +61,51 @@ std::string Runner::errorKey() const {
   return key;
 }
 
-const ErrorState& Runner::measureError() {
-  const std::string key = errorKey();
-  if (error_.valid && key == error_key_) return error_;
+// What the truth needs from the GPU, read back on the render thread (a few ms), so that the
+// ray tracing can run anywhere.
+struct Runner::TruthInputs {
+  std::string key;
+  int width = 0, height = 0;
+  std::vector<float> rendered;    // the lesson's visibility view
+  std::vector<glm::vec4> shaded;  // its shaded picture in float (NaN and Inf kept)
+  SurfaceBuffer surface;          // what each pixel sees, from the runner's geometry pass
+  TruthLight light;
+  std::string truth_name;
+  std::shared_ptr<const Truth> truth;  // null: build it from these triangles
+  std::vector<glm::vec3> positions;
+  std::vector<glm::uvec3> triangles;
+  float scene_radius = 0.0f;
+  // Lesson 08's air: its picture, the eye rays, and the medium (with its own spot texture).
+  std::optional<AirMedium> medium;
+  std::optional<SpotTexture> spot;
+  std::vector<float> air_rendered;
+  glm::vec3 eye{0.0f};
+  glm::mat4 inverse_view_projection{1.0f};
+  float camera_far = 100.0f;
+};
+
+Runner::TruthInputs Runner::gatherTruthInputs() {
+  TruthInputs in;
+  in.key = errorKey();
   const int w = options_.width, h = options_.height;
   const size_t n = static_cast<size_t>(w) * h;
+  in.width = w, in.height = h;
   const bool was_enabled = measure_->enabled();
   measure_->setEnabled(false);
 
   // The lesson's shadow term, and its shaded picture in float to catch NaN and Inf.
-  std::vector<float> rendered = renderVisibility();
+  in.rendered = renderVisibility();
   const GLuint fbo = gpu_->float_target->id();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   renderInto(fbo, w, h, "shaded", false, false);
-  std::vector<glm::vec4> shaded(n);
+  in.shaded.resize(n);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, shaded.data());
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, in.shaded.data());
 
   // The surface seen by each pixel, from the runner's own geometry pass.
-  SurfaceBuffer surface{w, h, std::vector<glm::vec4>(n), std::vector<glm::vec4>(n)};
+  in.surface = {w, h, std::vector<glm::vec4>(n), std::vector<glm::vec4>(n)};
   gpu_->surface->bind();
   glViewport(0, 0, w, h);
   const float clear_position[4] = {0, 0, 0, -1};
@@ -98,87 +123,134 @@ const ErrorState& Runner::measureError() {
   gpu_->gbuffer.set("uLightViewProjection", light_frustum_.value_or(glm::mat4(1.0f)));
   drawObjects(frame, gpu_->gbuffer, Objects::All, nullptr);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, surface.position.data());
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, in.surface.position.data());
   glReadBuffer(GL_COLOR_ATTACHMENT1);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, surface.normal.data());
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, in.surface.normal.data());
 
-  if (!truth_) {
-    std::vector<glm::vec3> positions;
-    std::vector<glm::uvec3> triangles;
-    scene_.worldTriangles(positions, triangles);
-    truth_ = std::make_unique<Truth>(positions, triangles, scene_.bounds().radius());
+  in.truth = truth_;
+  if (!in.truth) {
+    scene_.worldTriangles(in.positions, in.triangles);
+    in.scene_radius = scene_.bounds().radius();
   }
-  TruthLight truth_light;
-  truth_light.position = light.position;
-  truth_light.direction = light.direction;
-  truth_light.directional = light.directional;
-  truth_light.radius = truth_area_radius_;
-  truth_light.samples = 64;
-  const std::vector<float> truth = truth_->visibility(surface, truth_light);
-  const std::vector<float> weight = Truth::facingWeight(surface, truth_light);
-
-  error_.metrics = compareVisibility(rendered, truth, weight);
-  // Every surface the eye sees writes its normal, counted or not; the sky keeps the clear 0.
-  error_.metrics.covered_pixels =
-      std::count_if(surface.normal.begin(), surface.normal.end(),
-                    [](const glm::vec4& normal) { return glm::dot(normal, normal) > 0.0f; });
-  error_.metrics.truth = light.directional ? "directional" : "point";
+  in.light.position = light.position;
+  in.light.direction = light.direction;
+  in.light.directional = light.directional;
+  in.light.radius = truth_area_radius_;
+  in.light.samples = 64;
+  in.truth_name = light.directional ? "directional" : "point";
   if (truth_area_radius_ > 0.0f) {
     char name[64];
-    std::snprintf(name, sizeof name, "area r=%g n=%d", truth_area_radius_, truth_light.samples);
-    error_.metrics.truth = name;
+    std::snprintf(name, sizeof name, "area r=%g n=%d", truth_area_radius_, in.light.samples);
+    in.truth_name = name;
   }
+  if (medium_) {
+    // The lesson's air light alone, unscaled, against single scattering traced along the
+    // very eye rays of its pixels.
+    in.medium = medium_;
+    // A copy of the spot texture: the lesson may load another while the truth is traced
+    // (traceTruth points the medium at it).
+    if (medium_->spot != nullptr) in.spot = *medium_->spot;
+    in.air_rendered = renderRed("air");
+    in.eye = params_.at("camera.pos").v();
+    in.inverse_view_projection = glm::inverse(cameraProjection(w, h) * cameraView());
+    in.camera_far = scene_.camera.far;
+  }
+  measure_->setEnabled(was_enabled);
+  return in;
+}
+
+Runner::TruthResult Runner::traceTruth(TruthInputs in) {
+  TruthResult out;
+  out.key = in.key;
+  if (in.medium && in.spot) in.medium->spot = &*in.spot;  // this copy's, wherever it moved
+  out.truth = in.truth ? in.truth
+                       : std::make_shared<const Truth>(in.positions, in.triangles, in.scene_radius);
+  const Truth& truth_scene = *out.truth;
+  const int w = in.width, h = in.height;
+  const size_t n = static_cast<size_t>(w) * h;
+  const std::vector<float> truth = truth_scene.visibility(in.surface, in.light);
+  const std::vector<float> weight = Truth::facingWeight(in.surface, in.light);
+  ErrorMetrics& m = out.metrics;
+  m = compareVisibility(in.rendered, truth, weight);
+  // Every surface the eye sees writes its normal, counted or not; the sky keeps the clear 0.
+  m.covered_pixels =
+      std::count_if(in.surface.normal.begin(), in.surface.normal.end(),
+                    [](const glm::vec4& normal) { return glm::dot(normal, normal) > 0.0f; });
+  m.truth = in.truth_name;
   // Non-finite pixels: where the visibility or any channel of the shaded picture is NaN or
   // Inf, each pixel counted once.
   long long nonfinite = 0;
   std::vector<std::uint8_t> shaded_bytes(n * 4);
   for (size_t i = 0; i < n; ++i) {
-    bool finite = std::isfinite(rendered[i]);
+    bool finite = std::isfinite(in.rendered[i]);
     for (int c = 0; c < 4; ++c) {
-      const float v = shaded[i][c];
+      const float v = in.shaded[i][c];
       finite = finite && std::isfinite(v);
       shaded_bytes[i * 4 + static_cast<size_t>(c)] = static_cast<std::uint8_t>(
           std::lround(255.0f * std::clamp(std::isfinite(v) ? v : 0.0f, 0.0f, 1.0f)));
     }
     if (!finite) ++nonfinite;
   }
-  error_.metrics.nonfinite_pixels = nonfinite;
-  error_image_ = {w, h, errorImage(shaded_bytes, rendered, truth)};
-  truth_image_ = {w, h, std::vector<std::uint8_t>(n * 4)};
+  m.nonfinite_pixels = nonfinite;
+  out.error_image = {w, h, errorImage(shaded_bytes, in.rendered, truth)};
+  out.truth_image = {w, h, std::vector<std::uint8_t>(n * 4)};
   for (size_t i = 0; i < n; ++i) {
     // Truth lit white, shadowed black, not counted (no surface, facing away) dark blue.
     const bool counted = truth[i] >= 0.0f;
     const auto grey = static_cast<std::uint8_t>(std::lround(255.0f * std::max(truth[i], 0.0f)));
-    truth_image_.rgba[i * 4 + 0] = counted ? grey : 20;
-    truth_image_.rgba[i * 4 + 1] = counted ? grey : 24;
-    truth_image_.rgba[i * 4 + 2] = counted ? grey : 60;
-    truth_image_.rgba[i * 4 + 3] = 255;
+    out.truth_image.rgba[i * 4 + 0] = counted ? grey : 20;
+    out.truth_image.rgba[i * 4 + 1] = counted ? grey : 24;
+    out.truth_image.rgba[i * 4 + 2] = counted ? grey : 60;
+    out.truth_image.rgba[i * 4 + 3] = 255;
   }
-  error_.metrics.air = AirMetrics{};
-  if (medium_) measureAir(surface);
+  m.air = AirMetrics{};
+  if (in.medium) {
+    // The truth and error views then show the air.
+    out.air = truth_scene.airLight(in.surface, in.eye, in.inverse_view_projection, in.camera_far,
+                                   *in.medium);
+    m.air = compareAir(in.air_rendered, out.air);
+    m.nonfinite_pixels += m.air.nonfinite;
+    out.error_image = {w, h, airErrorImage(in.air_rendered, out.air.light)};
+    for (size_t i = 0; i < out.air.light.size(); ++i) {
+      const auto grey =
+          static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(out.air.light[i], 0.0f, 1.0f)));
+      out.truth_image.rgba[i * 4 + 0] = out.truth_image.rgba[i * 4 + 1] = grey;
+      out.truth_image.rgba[i * 4 + 2] = grey;
+    }
+  }
+  return out;
+}
+
+void Runner::installTruth(TruthResult result) {
+  // A truth built for a scene that has changed since is not kept (its key says so).
+  if (!truth_ && result.key == errorKey()) truth_ = std::move(result.truth);
+  error_.metrics = std::move(result.metrics);
   error_.valid = true;
-  error_key_ = key;
-  measure_->setEnabled(was_enabled);
+  error_key_ = std::move(result.key);
+  error_image_ = std::move(result.error_image);
+  truth_image_ = std::move(result.truth_image);
+  air_truth_ = std::move(result.air);
+}
+
+const ErrorState& Runner::measureError() {
+  if (truth_job_.valid()) installTruth(truth_job_.get());  // a window's job: wait for it
+  if (error_.valid && errorKey() == error_key_) return error_;
+  installTruth(traceTruth(gatherTruthInputs()));
   return error_;
 }
 
-void Runner::measureAir(const SurfaceBuffer& surface) {
-  // The lesson's air light alone, unscaled, against single scattering traced along the very
-  // eye rays of its pixels. The truth and error views then show the air.
-  const int w = options_.width, h = options_.height;
-  const std::vector<float> rendered = renderRed("air");
-  const glm::mat4 inverse_view_projection = glm::inverse(cameraProjection(w, h) * cameraView());
-  air_truth_ = truth_->airLight(surface, params_.at("camera.pos").v(), inverse_view_projection,
-                                scene_.camera.far, *medium_);
-  error_.metrics.air = compareAir(rendered, air_truth_);
-  error_.metrics.nonfinite_pixels += error_.metrics.air.nonfinite;
-  error_image_ = {w, h, airErrorImage(rendered, air_truth_.light)};
-  for (size_t i = 0; i < air_truth_.light.size(); ++i) {
-    const auto grey = static_cast<std::uint8_t>(
-        std::lround(255.0f * std::clamp(air_truth_.light[i], 0.0f, 1.0f)));
-    truth_image_.rgba[i * 4 + 0] = truth_image_.rgba[i * 4 + 1] = grey;
-    truth_image_.rgba[i * 4 + 2] = grey;
+void Runner::beginErrorMeasure() {
+  if (truth_job_.valid()) return;
+  truth_job_ = std::async(std::launch::async, &Runner::traceTruth, gatherTruthInputs());
+}
+
+bool Runner::pollErrorMeasure() {
+  if (!truth_job_.valid() ||
+      truth_job_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+    return false;
   }
+  installTruth(truth_job_.get());
+  return true;
 }
 
 }  // namespace shadows

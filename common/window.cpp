@@ -103,13 +103,17 @@ int Runner::runWindow() {
     if (w > 0 && h > 0) {
       options_.width = w, options_.height = h;
       gpu_->ensureTargets(w, h);
-      // The truth is re-measured once the sliders rest (it costs a few hundred ms).
+      // The truth is re-measured once the sliders rest. Its rays (a few hundred ms) are traced
+      // on a worker thread while frames go on; only the read-back of what it needs (the
+      // visibility, shaded and geometry passes) takes the render thread.
+      pollErrorMeasure();
       const std::string key = errorKey();
       if (key != last_key) changed_at = std::chrono::steady_clock::now(), last_key = key;
       const bool resting =
           std::chrono::steady_clock::now() - changed_at > std::chrono::milliseconds(300);
-      if (options_.truth && resting && key != error_key_ && !ImGui::IsAnyItemActive()) {
-        measureError();
+      if (options_.truth && resting && key != error_key_ && !errorMeasureRunning() &&
+          !ImGui::IsAnyItemActive()) {
+        beginErrorMeasure();
       }
       renderInto(0, w, h, params_.at("view").choice(), true, !options_.hide_panel);
       GlErrorLog::poll();
