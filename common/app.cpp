@@ -187,6 +187,7 @@ void Runner::releaseGl() {
   // runner's own, the context last (Gpu declares it first, so it is destroyed last).
   lesson_.reset();
   measure_.reset();
+  baseline_measure_.reset();
   gpu_.reset();
 }
 
@@ -194,6 +195,7 @@ void Runner::initGl() {
   GlErrorLog::install();
   GlErrorLog::reset();
   measure_ = std::make_unique<Measure>();
+  baseline_measure_ = std::make_unique<Measure>();
   const auto dir = commonShaderDir();
   gpu_->gbuffer = Program(dir / "gbuffer.vert", dir / "gbuffer.frag");
   gpu_->image = Program(dir / "fullscreen.vert", dir / "image.frag");
@@ -220,6 +222,36 @@ void Runner::renderFrame(bool timed) {
   const bool panel = gpu_->imgui && (window_ || options_.panel);
   renderInto(target, w, h, params_.at("view").choice(), timed, panel);
   GlErrorLog::poll();
+}
+
+void Runner::renderBaselineFrame() {
+  Param* off = params_.find("shadow.off");
+  const std::string view = params_.at("view").choice();
+  if (off == nullptr || off->b() || view == "truth" || view == "error") return;
+  int w = options_.width, h = options_.height;
+  if (window_) glfwGetFramebufferSize(gpu_->window, &w, &h);
+  gpu_->ensureTargets(w, h);
+  // What the lesson's frame told the runner, and what it has still to do (a dirty map must
+  // still be rendered by the next real frame), survive the baseline frame.
+  const std::uint32_t dirty = params_.dirty();
+  const auto frustum = light_frustum_;
+  const float area_radius = truth_area_radius_;
+  const auto medium = medium_;
+  std::swap(measure_, baseline_measure_);
+  off->value[0] = 1.0;  // not through Params::set: nothing is dirtied
+  renderInto(gpu_->target->id(), w, h, view, /*timed=*/true, /*withPanel=*/false);
+  off->value[0] = 0.0;
+  std::swap(measure_, baseline_measure_);
+  params_.markDirty(dirty);
+  light_frustum_ = frustum;
+  truth_area_radius_ = area_radius;
+  medium_ = medium;
+  GlErrorLog::poll();
+}
+
+double Runner::shadowOverhead() const {
+  const double base = baseline_measure_ ? baseline_measure_->medianFrameMs() : 0.0;
+  return base > 0.0 ? measure_->medianFrameMs() / base : 0.0;
 }
 
 void Runner::renderInto(GLuint target, int width, int height, const std::string& mode, bool timed,

@@ -159,6 +159,13 @@ class Runner {
   // Renders one frame into the runner's framebuffer (headless) or the window; untimed, it
   // leaves the timings and counters alone.
   void renderFrame(bool timed = true);
+  // The same frame with no shadow work (shadow.off), timed on its own and off-screen, so the
+  // report and the panel can say what the shadow costs over it, measured in the same run. The
+  // map and every dirty bit are left as they were. Nothing for lessons without shadow.off.
+  void renderBaselineFrame();
+  // Median frame over median baseline frame (0 before any baseline frame).
+  double shadowOverhead() const;
+  const Measure& baselineMeasure() const { return *baseline_measure_; }
   // The panel's frame line: the median the report gives ("measuring..." before any frame).
   std::string costSummary() const;
   // Feeds ImGui a mouse state for the next frame (headless tests drive the panel this way).
@@ -240,7 +247,7 @@ class Runner {
   Params params_;
   Scene scene_;
   std::vector<glm::mat4> preset_models_;
-  std::unique_ptr<Measure> measure_;
+  std::unique_ptr<Measure> measure_, baseline_measure_;
   long long compiled_at_start_ = ProgramVariants::compiledTotal();
   std::unique_ptr<Gpu> gpu_;
   std::shared_ptr<const Truth> truth_;  // shared with a job tracing on another thread

@@ -35,6 +35,11 @@ void Runner::writeReport(JsonWriter& json) {
   json.value("frames", options_.frames);
   params_.writeJson(json);
   json.value("frame_ms", measure_->medianFrameMs());
+  // What the shadow costs: the same frame with shadow.off, timed in the same run.
+  if (baseline_measure_ && baseline_measure_->timedFrames() > 0) {
+    json.value("baseline_frame_ms", baseline_measure_->medianFrameMs());
+    json.value("shadow_overhead", shadowOverhead());
+  }
   json.beginObject("pass_ms");
   for (const auto& [pass, ms] : measure_->medianPassMs()) json.value(pass, ms);
   json.endObject();
@@ -118,10 +123,15 @@ int Runner::runHeadless() {
     out = "out/" + name_ + ".png";
   }
   renderFrame();  // warm-up: shader JIT and the first shadow map land here
+  renderBaselineFrame();
   // A snapshot with the panel should show the error numbers, so measure them first.
   if (options_.panel && options_.truth) measureError();
   measure_->clearHistory();
-  for (int i = 0; i < options_.frames; ++i) renderFrame();
+  baseline_measure_->clearHistory();
+  for (int i = 0; i < options_.frames; ++i) {
+    renderBaselineFrame();  // interleaved with the frames it is compared with; first, as the
+    renderFrame();          // picture is read from the same target
+  }
   // The panel shows the run's medians, the numbers the report gives: it is drawn once more,
   // untimed, after the last timed frame.
   if (options_.panel) renderFrame(/*timed=*/false);
@@ -137,6 +147,9 @@ int Runner::runHeadless() {
   const auto& counts = measure_->lastFrameCounts();
   if (const auto it = counts.find("shadow_map_renders"); it != counts.end() && it->second == 0) {
     std::printf(" (map cached)");
+  }
+  if (const double overhead = shadowOverhead(); overhead > 0.0) {
+    std::printf(", %.2fx without shadow", overhead);
   }
   if (error_.valid) {
     std::printf("  false shadow %6.2f%%  false lit %5.2f%%", error_.metrics.false_shadow_pct,

@@ -30,7 +30,13 @@ std::string Runner::costSummary() const {
   char line[96];
   std::snprintf(line, sizeof line, "frame %.2f ms (median of %zu)", measure_->medianFrameMs(),
                 frames);
-  return line;
+  std::string summary = line;
+  if (const double overhead = shadowOverhead(); overhead > 0.0) {
+    std::snprintf(line, sizeof line, "\nshadow: %.2fx the frame without it (%.2f ms)", overhead,
+                  baseline_measure_->medianFrameMs());
+    summary += line;
+  }
+  return summary;
 }
 
 void Runner::drawPanel(Frame& frame) {

@@ -60,6 +60,7 @@ int Runner::runWindow() {
   // With --out, a windowed run renders --frames frames, saves the window and exits: that is
   // how the tests check the real window path under xvfb.
   int frames_left = options_.out.empty() ? -1 : options_.frames + 1;
+  long long frame_number = 0;
   bool outputs_failed = false;
   while (!glfwWindowShouldClose(window) && frames_left != 0) {
     glfwPollEvents();
@@ -115,6 +116,9 @@ int Runner::runWindow() {
           !ImGui::IsAnyItemActive()) {
         beginErrorMeasure();
       }
+      // The panel's "shadow: N x the frame without it": one frame in 32 is rendered again,
+      // off-screen, with shadow.off.
+      if (!options_.hide_panel && frame_number++ % 32 == 0) renderBaselineFrame();
       renderInto(0, w, h, params_.at("view").choice(), true, !options_.hide_panel);
       GlErrorLog::poll();
       if (screenshot_requested_) {
