@@ -116,8 +116,11 @@ void Runner::drawObjects(const Frame& frame, const Program& program, Objects whi
   const bool eye_view = which == Objects::All;
   // A closed solid's nearest surface, from the eye or from the light, is always a face turned
   // toward it: its back faces can only fail the depth test, and skipping them changes no
-  // depth. Unless the pass culls for its own reasons (a bias that keeps only back faces).
-  const bool cull_solids = glIsEnabled(GL_CULL_FACE) == GL_FALSE;
+  // depth. Unless the pass culls for its own reasons (a bias that keeps only back faces), or
+  // offsets each polygon by its slope (glPolygonOffset): then a steep back face at a
+  // silhouette may end up nearer than its front face, and a map must keep it.
+  const bool offset_map = !eye_view && glIsEnabled(GL_POLYGON_OFFSET_FILL) == GL_TRUE;
+  const bool cull_solids = glIsEnabled(GL_CULL_FACE) == GL_FALSE && !offset_map;
   if (cull_solids) glCullFace(GL_BACK);
   if (eye_view) {
     const auto key = [&](size_t i) {
