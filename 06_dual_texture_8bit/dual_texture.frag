@@ -15,9 +15,9 @@ in vec3 vWorld;
 in vec3 vNormal;
 uniform sampler2D uMap;   // Tex0
 uniform sampler1D uRamp;  // Tex1
-uniform int uRampLookup;  // 0: compare with the exact fragment depth instead of Tex1
 uniform vec3 uColor;
-uniform int uOutput;  // 0 colour, 1 visibility; views: 2 Tex1 (ramp), 3 texenv alpha - 0.5
+// Also compiled per VIEW (colour, visibility; the views ramp: Tex1, difference: texenv alpha
+// - 0.5) and RAMP_LOOKUP (0: compare with the exact fragment depth instead of Tex1).
 out vec4 outColor;
 
 float mapSteps() {
@@ -27,8 +27,11 @@ float mapSteps() {
 
 float fragmentSteps() {
   float s = fragmentDepth();
-  if (uRampLookup == 1) return floor(texture(uRamp, s).r * 255.0 + 0.5);
+#if RAMP_LOOKUP
+  return floor(texture(uRamp, s).r * 255.0 + 0.5);
+#else
   return min(clamp(s, 0.0, 1.0) * 255.0, 254.5);  // exact, below the cleared map as the ramp is
+#endif
 }
 
 float alpha() {
@@ -44,22 +47,30 @@ void main() {
 #else
   float lit = 0.0;
 #endif
-  outColor = uOutput == 1 ? vec4(vec3(lit), 1.0)
-                          : vec4(shadeSurface(uColor, vWorld, normalize(vNormal), lit), 1.0);
+#if VIEW == VIEW_VISIBILITY
+  outColor = vec4(vec3(lit), 1.0);
+#else
+  outColor = vec4(shadeSurface(uColor, vWorld, normalize(vNormal), lit), 1.0);
+#endif
 #elif PASS == 2
   // "Enable the light source, un-rejected pixels = unshadowed".
   if (!alphaTestPasses(alpha())) discard;
-  outColor = uOutput == 1 ? vec4(1.0)
-                          : vec4(shadeSurface(uColor, vWorld, normalize(vNormal), 1.0), 1.0);
+#if VIEW == VIEW_VISIBILITY
+  outColor = vec4(1.0);
 #else
-  if (uOutput == 2) {
-    outColor = vec4(vec3(fragmentSteps() / 255.0), 1.0);
-  } else {
+  outColor = vec4(shadeSurface(uColor, vWorld, normalize(vNormal), 1.0), 1.0);
+#endif
+#else
+#if VIEW == VIEW_RAMP
+  outColor = vec4(vec3(fragmentSteps() / 255.0), 1.0);
+#else
+  {
     // Signed and magnified 64x (one 8-bit step = a quarter of full): green where the map
     // lies beyond the fragment (lit), red where it does not (shadowed, ties included: the
     // self-shadowing 000 warns about).
     float d = 64.0 * (alpha() - 0.5);
     outColor = d > 0.0 ? vec4(0.0, min(d, 1.0), 0.0, 1.0) : vec4(max(0.25, min(-d, 1.0)), 0.0, 0.0, 1.0);
   }
+#endif
 #endif
 }

@@ -39,12 +39,8 @@ class DualTexture8bit final : public Lesson {
 
   void init() override {
     map_.init();
-    const auto vertex = commonShaderDir() / "readback_eye.vert";
-    const auto fragment = lessonFile(LESSON_DIR, "dual_texture.frag");
-    for (int pass = 0; pass < 3; ++pass) {
-      passes_[pass] = Program(vertex, fragment, {"PASS " + std::to_string(pass), "SHADOW_OFF 0"});
-    }
-    passes_[3] = Program(vertex, fragment, {"PASS 1", "SHADOW_OFF 1"});  // shadow.off
+    variants_ = ProgramVariants(commonShaderDir() / "readback_eye.vert",
+                                lessonFile(LESSON_DIR, "dual_texture.frag"));
   }
 
   void render(Frame& f) override {
@@ -57,15 +53,8 @@ class DualTexture8bit final : public Lesson {
     // The visibility view clears to 0 (shadowed), so a pass switched off leaves its pixels
     // shadowed, not the sky's colour (which would read as lit).
     f.clearTarget(f.mode == "visibility" ? glm::vec3(0.0f) : Frame::kSky);
-    for (const Program& program : passes_) {
-      program.set("uViewProjection", f.projection * f.view);
-      program.set("uRampLookup", ramp_lookup_() ? 1 : 0);
-      program.set("uOutput", outputIndex(f.mode));
-      map_.bindForLookup(f, program);
-      f.setLightingUniforms(program, dimming_());
-    }
     if (f.mode == "ramp" || f.mode == "difference") {  // one value per pixel, no test
-      f.drawObjects(passes_[0], Objects::All);
+      f.drawObjects(pass(f, 0), Objects::All);
     } else {
       drawPasses(f);
     }
@@ -87,16 +76,21 @@ class DualTexture8bit final : public Lesson {
   }
 
  private:
-  static int outputIndex(const std::string& mode) {
-    if (mode == "visibility") return 1;
-    if (mode == "ramp") return 2;
-    if (mode == "difference") return 3;
-    return 0;
+  // dual_texture.frag compiled as PASS 1 or 2 (0: the one-value views) for this view,
+  // ramp.lookup and shadow.off (pass 1 lit, no map), with this frame's uniforms set.
+  const Program& pass(const Frame& f, int number, bool unshadowed = false) {
+    const Program& program =
+        variants_.get({define("PASS", number), define("SHADOW_OFF", unshadowed),
+                       ramp_lookup_.defines(), f.viewDefines()});
+    program.set("uViewProjection", f.projection * f.view);
+    map_.bindForLookup(f, program);
+    f.setLightingUniforms(program, dimming_());
+    return program;
   }
 
   void drawPasses(Frame& f) {
     // Pass 1 lays the depth pass 2 must equal (shadow.off: one lit pass, no map, no lookup).
-    if (!map_.drawBasePass(f, passes_[1], passes_[3], dimmed_())) return;
+    if (!map_.drawBasePass(f, pass(f, 1, map_.light().off()), dimmed_())) return;
     lit_fragments_ = 0;
     if (!lit_()) return;
     auto timing = f.measure.pass("pass2");
@@ -105,7 +99,7 @@ class DualTexture8bit final : public Lesson {
     lit.depth_write = false;
     lit.apply();
     query_.begin();
-    f.drawObjects(passes_[2], Objects::All);
+    f.drawObjects(pass(f, 2), Objects::All);
     query_.end();
     lit_fragments_ = query_.result();
     f.measure.count("pass2_lit_fragments", lit_fragments_);
@@ -122,8 +116,7 @@ class DualTexture8bit final : public Lesson {
   }
 
   DepthReadback map_{1};
-  // dual_texture.frag compiled as PASS 0 (the views), 1, 2, and 1 lit without a map.
-  Program passes_[4];
+  ProgramVariants variants_;
   SamplesPassedQuery query_;
   long long lit_fragments_ = 0;
   BoolParam ramp_lookup_, dimmed_, lit_;

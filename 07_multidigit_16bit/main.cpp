@@ -43,12 +43,8 @@ class MultiDigit16bit final : public Lesson {
   void init() override {
     map_.init();
     const auto vertex = commonShaderDir() / "readback_eye.vert";
-    const auto fragment = lessonFile(LESSON_DIR, "multidigit.frag");
-    passes_[0] = Program(vertex, fragment, {"PASS 1", "SHADOW_OFF 0"});
-    passes_[1] = Program(vertex, fragment, {"PASS 2", "SHADOW_OFF 0"});
-    passes_[2] = Program(vertex, lessonFile(LESSON_DIR, "multidigit_pass3.frag"),
-                         {"PASS 3", "SHADOW_OFF 0"});
-    passes_[3] = Program(vertex, fragment, {"PASS 1", "SHADOW_OFF 1"});  // shadow.off
+    passes_ = ProgramVariants(vertex, lessonFile(LESSON_DIR, "multidigit.frag"));
+    pass3_ = ProgramVariants(vertex, lessonFile(LESSON_DIR, "multidigit_pass3.frag"));
     digits_view_ =
         Program(commonShaderDir() / "fullscreen.vert", lessonFile(LESSON_DIR, "digits_view.frag"));
   }
@@ -63,14 +59,7 @@ class MultiDigit16bit final : public Lesson {
     // Colour, depth, and the stencil to 0; the visibility view to 0 (shadowed), so a pass
     // switched off leaves its pixels shadowed, not the sky's colour.
     f.clearTarget(f.mode == "visibility" ? glm::vec3(0.0f) : Frame::kSky);
-    const int output = f.mode == "visibility" ? 1 : f.mode == "passes" ? 2 : 0;
-    for (const Program& program : passes_) {
-      program.set("uViewProjection", f.projection * f.view);
-      program.set("uOutput", output);
-      map_.bindForLookup(f, program);
-      f.setLightingUniforms(program, dimming_());
-    }
-    drawPasses(f, output == 2);
+    drawPasses(f, f.mode == "passes");
     // The inset: the little digit, "here is where the information is".
     if (f.mode != "visibility" && inset_() && !map_.light().off()) {
       drawDigits(f, 1, /*inset=*/true);
@@ -92,7 +81,7 @@ class MultiDigit16bit final : public Lesson {
  private:
   void drawPasses(Frame& f, bool additive) {
     // Pass 1 lays the depth passes 2 and 3 must equal (shadow.off: one lit pass, no lookup).
-    if (!map_.drawBasePass(f, passes_[0], passes_[3], dimmed_())) return;
+    if (!map_.drawBasePass(f, pass(f, 1, map_.light().off()), dimmed_())) return;
     PassState lit;
     lit.depth_func = GL_EQUAL;
     lit.depth_write = false;
@@ -108,7 +97,7 @@ class MultiDigit16bit final : public Lesson {
       big.stencil_ref = 1;
       big.stencil_pass = GL_REPLACE;
       big.apply();
-      lit_[0] = countLit(f, passes_[1], 0);
+      lit_[0] = countLit(f, pass(f, 2), 0);
     }
     lit_[1] = 0;
     if (little_()) {
@@ -117,11 +106,23 @@ class MultiDigit16bit final : public Lesson {
       little.stencil_func = GL_NOTEQUAL;  // passes where 1 != stencil
       little.stencil_ref = 1;
       little.apply();
-      lit_[1] = countLit(f, passes_[2], 1);
+      lit_[1] = countLit(f, pass(f, 3), 1);
     }
     f.measure.count("pass2_lit_fragments", lit_[0]);
     f.measure.count("pass3_lit_fragments", lit_[1]);
     PassState{}.apply();
+  }
+
+  // Pass 1, 2 (multidigit.frag) or 3 (its early-tests twin) compiled for this view and
+  // shadow.off (pass 1 lit, no map), with this frame's uniforms set.
+  const Program& pass(const Frame& f, int number, bool unshadowed = false) {
+    const Program& program =
+        (number == 3 ? pass3_ : passes_)
+            .get({define("PASS", number), define("SHADOW_OFF", unshadowed), f.viewDefines()});
+    program.set("uViewProjection", f.projection * f.view);
+    map_.bindForLookup(f, program);
+    f.setLightingUniforms(program, dimming_());
+    return program;
   }
 
   long long countLit(const Frame& f, const Program& program, int index) {
@@ -138,8 +139,7 @@ class MultiDigit16bit final : public Lesson {
   }
 
   DepthReadback map_{2};
-  // PASS 1, 2 (multidigit.frag), 3 (its early-tests twin), and 1 lit without a map.
-  Program passes_[4];
+  ProgramVariants passes_, pass3_;
   Program digits_view_;
   SamplesPassedQuery queries_[2];
   long long lit_[2] = {0, 0};

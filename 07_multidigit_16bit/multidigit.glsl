@@ -18,7 +18,7 @@ uniform sampler2D uMap;       // Tex0: big digit in r, little digit in g
 uniform sampler1D uRampBig;   // Tex1 of pass 2
 uniform sampler2D uRamp;      // Tex1 of pass 3
 uniform vec3 uColor;
-uniform int uOutput;  // 0 colour, 1 visibility, 2 which pass lit (1 grey, 2 green, 3 blue)
+// Compiled per VIEW: the colour, the visibility, or which pass lit (1 grey, 2 green, 3 blue).
 out vec4 outColor;
 
 vec2 mapDigits() {
@@ -36,9 +36,13 @@ float rampS() {
 }
 
 vec4 passColor(float shade, vec4 passesView) {
-  if (uOutput == 1) return vec4(vec3(shade), 1.0);
-  if (uOutput == 2) return passesView;
+#if VIEW == VIEW_VISIBILITY
+  return vec4(vec3(shade), 1.0);
+#elif VIEW == VIEW_PASSES
+  return passesView;
+#else
   return vec4(shadeSurface(uColor, vWorld, normalize(vNormal), shade), 1.0);
+#endif
 }
 
 void main() {

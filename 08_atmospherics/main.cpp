@@ -57,7 +57,8 @@ class Atmospherics final : public Lesson {
 
   void init() override {
     glGenVertexArrays(1, &empty_vao_);  // slices need no vertices: gl_VertexID, gl_InstanceID
-    // Compiled per shadow.off (the baseline: no lookup) and air.early_reject, on first use.
+    // Compiled per shadow.off (the baseline: no lookup), air.early_reject, air.jitter and the
+    // view, on first use.
     room_ =
         ProgramVariants(lessonFile(LESSON_DIR, "room.vert"), lessonFile(LESSON_DIR, "room.frag"));
     slice_programs_ =
@@ -82,17 +83,13 @@ class Atmospherics final : public Lesson {
       f.clearTarget(f.mode == "air" || f.mode == "visibility" ? glm::vec3(0.0f)
                                                               : glm::vec3(0.02f, 0.02f, 0.03f));
       bindLightTextures();
-      const Program& room = room_.get({define("SHADOW_OFF", map_.off())});
+      const Program& room = room_.get({define("SHADOW_OFF", map_.off()), f.viewDefines()});
       room.set("uViewProjection", f.projection * f.view);
       room.set("uShadowMatrix", map_.textureMatrix());
       room.set("uSpotMatrix", biasMatrix() * cone);
       room.set("uLightPos", f.light.position);
       room.set("uEye", f.eye);
       room.set("uDimming", dimming_());
-      room.set("uOutput", f.mode == "visibility" ? 1
-                          : f.mode == "spot"     ? 2
-                          : f.mode == "air"      ? 3
-                                                 : 0);
       room.set("uSpot", 0);
       room.set("uShadowMap", 1);
       f.drawObjects(room, Objects::All);
@@ -222,7 +219,8 @@ class Atmospherics final : public Lesson {
     passed_ = 0;
     if (!(step_ > 0.0f)) return;  // the cone lies behind the eye
     const Program& slices =
-        slice_programs_.get({define("SHADOW_OFF", map_.off()), early_reject_.defines()});
+        slice_programs_.get({define("SHADOW_OFF", map_.off()), early_reject_.defines(),
+                             jitter_.defines(), f.viewDefines()});
     glProgramUniform4fv(slices.id(), slices.location("uRects"), slices_drawn_, &rects_[0][0]);
     slices.set("uFar", far_);
     slices.set("uStep", step_);
@@ -233,8 +231,6 @@ class Atmospherics final : public Lesson {
     slices.set("uShadowMatrix", map_.textureMatrix());
     slices.set("uSpotMatrix", biasMatrix() * cone);
     slices.set("uDensity", density_());
-    slices.set("uJitter", jitter_() ? 1 : 0);
-    slices.set("uOutput", f.mode == "air" ? 1 : 0);
     slices.set("uAirColor", glm::vec3(1.0f, 0.93f, 0.78f));
     slices.set("uSpot", 0);
     slices.set("uShadowMap", 1);

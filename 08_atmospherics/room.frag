@@ -9,20 +9,23 @@ uniform vec3 uColor;
 uniform vec3 uLightPos;
 uniform vec3 uEye;
 uniform float uDimming;
-uniform int uOutput;  // 0 lit surfaces, 1 visibility, 2 the spot without shadows, 3 black
+// Compiled per VIEW (main.cpp): lit surfaces, the visibility, the spot without shadows, or
+// black for the air alone.
 out vec4 outColor;
 
 void main() {
+#if VIEW == VIEW_AIR
+  outColor = vec4(0.0, 0.0, 0.0, 1.0);  // the air alone: surfaces only hide what lies behind
+#else
   float shadow = shadowTest(vShadowCoord);
-  if (uOutput == 1) {
-    outColor = vec4(vec3(shadow), 1.0);
-    return;
-  }
-  if (uOutput == 3) {  // the air alone: surfaces only hide what lies behind them
-    outColor = vec4(0.0, 0.0, 0.0, 1.0);
-    return;
-  }
-  float shade = uOutput == 2 ? 1.0 : uDimming + (1.0 - uDimming) * shadow;
+#if VIEW == VIEW_VISIBILITY
+  outColor = vec4(vec3(shadow), 1.0);
+#else
+#if VIEW == VIEW_SPOT
+  float shade = 1.0;
+#else
+  float shade = uDimming + (1.0 - uDimming) * shadow;
+#endif
   float spot = spotLight(vSpotCoord);
   vec3 n = normalize(vNormal);
   vec3 l = normalize(uLightPos - vWorld);
@@ -31,4 +34,6 @@ void main() {
   float spec = nl > 0.0 ? pow(max(dot(n, h), 0.0), 48.0) : 0.0;
   vec3 lit = uColor * (0.06 + 0.94 * nl * spot * shade) + vec3(0.3) * spec * spot * shadow;
   outColor = vec4(lit, 1.0);
+#endif
+#endif
 }

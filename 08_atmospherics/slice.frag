@@ -18,8 +18,6 @@ uniform mat4 uShadowMatrix;  // B * P_map * V_light
 uniform mat4 uSpotMatrix;    // B * P_cone * V_light
 uniform float uStep;         // view depth between slices
 uniform float uDensity;
-uniform int uJitter;
-uniform int uOutput;  // 0 colour, 1 the air light alone, grey (red: what the truth compares)
 uniform vec3 uAirColor;
 out vec4 outColor;
 
@@ -40,14 +38,18 @@ void main() {
   // slice stands for (longer toward the screen's edges).
   vec3 ray = vec3(vNdc * uTanHalfFov, -1.0);
   float depth = vDepth;
-  if (uJitter == 1) {
-    // A different depth inside the slice's interval for every pixel: noise instead of bands.
-    uint h = hash(uint(gl_FragCoord.x) * 73856093u ^ uint(gl_FragCoord.y) * 19349663u ^
-                  uint(vSlice) * 83492791u);
-    depth += (float(h >> 8) * (1.0 / 16777216.0) - 0.5) * uStep;
-  }
+#if AIR_JITTER
+  // A different depth inside the slice's interval for every pixel: noise instead of bands.
+  uint h = hash(uint(gl_FragCoord.x) * 73856093u ^ uint(gl_FragCoord.y) * 19349663u ^
+                uint(vSlice) * 83492791u);
+  depth += (float(h >> 8) * (1.0 / 16777216.0) - 0.5) * uStep;
+#endif
   vec3 world = (uInverseView * vec4(ray * depth, 1.0)).xyz;
   float light = uDensity * uStep * length(ray) * spotLight(uSpotMatrix * vec4(world, 1.0)) *
                 shadowTest(uShadowMatrix * vec4(world, 1.0));
-  outColor = uOutput == 1 ? vec4(vec3(light), 0.0) : vec4(uAirColor * light, 0.0);
+#if VIEW == VIEW_AIR
+  outColor = vec4(vec3(light), 0.0);  // the air light alone, grey (red: what the truth compares)
+#else
+  outColor = vec4(uAirColor * light, 0.0);
+#endif
 }

@@ -293,18 +293,13 @@ void DepthReadback::bindForLookup(const Frame& f, const Program& program) const 
   program.set("uTexgenBias", texgenBias(f));
 }
 
-bool DepthReadback::drawBasePass(Frame& f, const Program& dimmed, const Program& unshadowed,
-                                 bool color) const {
+bool DepthReadback::drawBasePass(Frame& f, const Program& program, bool color) const {
   auto timing = f.measure.pass("pass1", /*countPassed=*/true);
-  if (light_.off()) {
-    f.drawObjects(unshadowed, Objects::All);
-    return false;
-  }
   PassState state;
-  state.color_write = color;
+  state.color_write = color || light_.off();
   state.apply();
-  f.drawObjects(dimmed, Objects::All);
-  return true;
+  f.drawObjects(program, Objects::All);
+  return !light_.off();
 }
 
 void DepthReadback::drawInset(const Frame& frame, bool fullscreen) const {

@@ -38,12 +38,12 @@ class DepthReadback {
   // to unit 2), and sets what the eye shaders of 06/07 read: uMap, uRamp(Big), uMapIsDepth,
   // uReadbackNearest, uLinear, uShadowMatrix, uLinearPlane, uTexgenBias.
   void bindForLookup(const Frame& frame, const Program& program) const;
-  // Pass 1 of the slides' multi-pass compare, timed as "pass1": everything drawn with
-  // `dimmed`, laying the depth the lit passes must GL_EQUAL (with `color` off it still lays
-  // it, in no colour). With shadow.off the baseline instead: `unshadowed` lights everything
-  // once, and this returns false: no lit passes follow.
-  bool drawBasePass(Frame& frame, const Program& dimmed, const Program& unshadowed,
-                    bool color) const;
+  // Pass 1 of the slides' multi-pass compare, timed as "pass1": everything drawn dimmed with
+  // `program`, laying the depth the lit passes must GL_EQUAL (with `color` off it still lays
+  // it, in no colour). With shadow.off the baseline instead: `program` (the lesson's pass 1
+  // compiled with SHADOW_OFF) lights everything once, and this returns false: no lit passes
+  // follow.
+  bool drawBasePass(Frame& frame, const Program& program, bool color) const;
   // The map over the whole target (view "map") or in a corner, when `inset` is on.
   void drawInset(const Frame& frame, bool fullscreen = false) const;
 
