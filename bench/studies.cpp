@@ -54,12 +54,30 @@ Sweep precisionStudy() {
           .study = true};
 }
 
+// What PCF's taps cost (issue 10): lesson 05's eye pass against the same pass with no shadow
+// work, for one tap, a 3x3 grid with every tap taken, and the grid with its early out; the map
+// rendered every frame, the counting off, on the preset of cubes and the default one.
+Sweep pcfCostStudy() {
+  const std::string grid = "lesson=05_pcf_dithered pcf.mode=grid pcf.taps=9 pcf.radius=1.5";
+  return {.scenes = {"cubes", "torus_pyramid"},
+          .axes = {{"shadow.off", {"false", "true"}},
+                   {"kernel",
+                    {"none:lesson=05_pcf_dithered pcf.mode=none",
+                     "grid3x3:" + grid + " pcf.early_out=false",
+                     "grid3x3_early_out:" + grid + " pcf.early_out=true"}}},
+          .fixed = {"inset=false", "shadow.cache=false", "pcf.count=false"},
+          .plot_metrics = {"vis_mae"},
+          .study = true};
+}
+
 }  // namespace
 
 std::map<std::string, Sweep> studies() {
   // Built on first use, not at start-up: shadow_cost asks the lessons, which register
   // themselves while the program starts.
-  return {{"precision_study", precisionStudy()}, {"shadow_cost", shadowCostSweep()}};
+  return {{"precision_study", precisionStudy()},
+          {"shadow_cost", shadowCostSweep()},
+          {"pcf_cost", pcfCostStudy()}};
 }
 
 }  // namespace shadows::bench

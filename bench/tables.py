@@ -6,6 +6,7 @@ READMEs quote comes from a command anyone can re-run:
   bench/tables.py precision bench/results/precision_study.csv
   bench/tables.py copy bench/results/06_dual_texture_8bit.csv bench/results/07_multidigit_16bit.csv
   bench/tables.py cost bench/results/shadow_cost.csv
+  bench/tables.py pcf bench/results/pcf_cost.csv
 """
 import csv
 import statistics
@@ -111,11 +112,35 @@ def cost(path):
               f"{fresh / base_fresh:.2f}× | {med('false', 'false', 'pass_ms.shadow'):.1f} |")
 
 
+def pcf(path):
+    """The pcf_cost study: lesson 05's eye pass per kernel over the unshadowed eye pass."""
+    data = rows(path)
+    print("\nwhat PCF's taps cost: eye pass with the kernel / the same pass with shadow.off, "
+          "per scene (median ms of the eye pass, CPU-time ratio in brackets)\n")
+    scenes = ordered(r["scene"] for r in data)
+    print("| kernel | " + " | ".join(f"{s}: eye ms | ratio" for s in scenes) + " |")
+    print("|---|" + "---|---|" * len(scenes))
+    for kernel in ordered(r["kernel"] for r in data):
+        cells = []
+        for scene in scenes:
+            def pick(off, key):
+                for r in data:
+                    if r["kernel"] == kernel and r["scene"] == scene and r["shadow.off"] == off:
+                        return num(r, key)
+                return float("nan")
+            eye, base = pick("false", "pass_ms.eye"), pick("true", "pass_ms.eye")
+            cpu = pick("false", "cpu_ms") / pick("true", "cpu_ms")
+            cells.append(f"{eye:.2f} | {eye / base:.2f}× ({cpu:.2f}×)")
+        print(f"| {kernel} | " + " | ".join(cells) + " |")
+
+
 if __name__ == "__main__":
     if len(sys.argv) >= 3 and sys.argv[1] == "precision":
         precision(sys.argv[2])
     elif len(sys.argv) >= 3 and sys.argv[1] == "cost":
         cost(sys.argv[2])
+    elif len(sys.argv) >= 3 and sys.argv[1] == "pcf":
+        pcf(sys.argv[2])
     elif len(sys.argv) >= 3 and sys.argv[1] == "copy":
         copy(sys.argv[2:])
     else:
