@@ -216,6 +216,10 @@ class Runner {
                  bool fullscreen) const;
   void drawImageInset(const Frame& frame, const Texture& image, bool fullscreen) const;
   void drawFullscreen(const Frame& frame, const Program& program, bool inset) const;
+  // The window's panel cache (panel.cpp).
+  bool panelDue(int width, int height);
+  void drawPanelTexture(int width, int height);
+  void laySavedPanel(const Frame& frame);
 
   struct Gpu;
   void declareShared();
@@ -248,6 +252,7 @@ class Runner {
   Scene scene_;
   std::vector<glm::mat4> preset_models_;
   std::unique_ptr<Measure> measure_, baseline_measure_;
+  long long baseline_frames_ = 0;
   long long compiled_at_start_ = ProgramVariants::compiledTotal();
   std::unique_ptr<Gpu> gpu_;
   std::shared_ptr<const Truth> truth_;  // shared with a job tracing on another thread

@@ -39,6 +39,80 @@ std::string Runner::costSummary() const {
   return summary;
 }
 
+bool Runner::panelDue(int width, int height) {
+  Gpu& g = *gpu_;
+  glm::dvec2 cursor;
+  glfwGetCursorPos(g.window, &cursor.x, &cursor.y);
+  bool down = false;
+  for (int b = GLFW_MOUSE_BUTTON_1; b <= GLFW_MOUSE_BUTTON_3; ++b) {
+    down = down || glfwGetMouseButton(g.window, b) == GLFW_PRESS;
+  }
+  const auto now = std::chrono::steady_clock::now();
+  // A wheel turn waits in ImGui's io until a panel frame takes it (the orbit camera reads it
+  // from there too); typing into a field wants every frame.
+  const bool due = g.panel_draws < 3 || g.panel_color.width() != width ||
+                   g.panel_color.height() != height || cursor != g.cursor || down ||
+                   down != g.buttons_down || g.panel_typing || ImGui::GetIO().MouseWheel != 0.0f ||
+                   now - g.panel_drawn > std::chrono::milliseconds(250);
+  g.cursor = cursor;
+  g.buttons_down = down;
+  return due;
+}
+
+void Runner::drawPanelTexture(int width, int height) {
+  Gpu& g = *gpu_;
+  if (g.panel_color.width() != width || g.panel_color.height() != height) {
+    g.panel_color = Texture::color(width, height, GL_RGBA8);
+    g.panel_target = std::make_unique<Framebuffer>();
+    g.panel_target->attachColor(g.panel_color);
+    g.panel_target->check();
+  }
+  if (g.panel_over.id() == 0) {
+    g.panel_over =
+        Program(commonShaderDir() / "fullscreen.vert", commonShaderDir() / "panel_over.frag");
+  }
+  g.panel_target->bind();
+  glViewport(0, 0, width, height);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  const ImDrawData* data = ImGui::GetDrawData();
+  ImGui_ImplOpenGL3_RenderDrawData(const_cast<ImDrawData*>(data));
+  // Where it drew (ImGui's y points down, GL's up): the only pixels to lay over the frame.
+  glm::vec2 lo(1e9f), hi(-1e9f);
+  for (int l = 0; l < data->CmdListsCount; ++l) {
+    for (const ImDrawVert& v : data->CmdLists[l]->VtxBuffer) {
+      lo = glm::min(lo, glm::vec2(v.pos.x, v.pos.y));
+      hi = glm::max(hi, glm::vec2(v.pos.x, v.pos.y));
+    }
+  }
+  const glm::ivec2 a = glm::clamp(glm::ivec2(glm::floor(lo)), glm::ivec2(0), {width, height});
+  const glm::ivec2 b = glm::clamp(glm::ivec2(glm::ceil(hi)), glm::ivec2(0), {width, height});
+  g.panel_box =
+      b.x > a.x && b.y > a.y ? glm::ivec4(a.x, height - b.y, b.x - a.x, b.y - a.y) : glm::ivec4(0);
+  g.panel_drawn = std::chrono::steady_clock::now();
+  g.panel_typing = ImGui::GetIO().WantTextInput;
+  ++g.panel_draws;
+}
+
+void Runner::laySavedPanel(const Frame& frame) {
+  const Gpu& g = *gpu_;
+  if (g.panel_box.z == 0) return;
+  frame.bindTarget();
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(g.panel_box.x, g.panel_box.y, g.panel_box.z, g.panel_box.w);
+  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // the texture's colour carries its alpha
+  g.panel_color.bind(0);
+  g.panel_over.set("uPanel", 0);
+  g.panel_over.use();
+  glBindVertexArray(g.empty_vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_BLEND);
+  glEnable(GL_DEPTH_TEST);
+}
+
 void Runner::drawPanel(Frame& frame) {
   // Narrow, in the top-left corner, in sections that fold away; folded whole on small
   // pictures, where it would hide everything.

@@ -6,6 +6,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <chrono>
 #include <memory>
 #include <vector>
 
@@ -31,6 +32,16 @@ struct Runner::Gpu {
   int size_w = 0, size_h = 0;
   Program gbuffer, image, depth_inset;
   Texture shown;  // the error or truth image, uploaded for display
+  // The window's panel: drawn into its own texture only when it may have changed, laid over
+  // every frame (Runner::panelDue, drawPanelTexture, laySavedPanel).
+  Texture panel_color;
+  std::unique_ptr<Framebuffer> panel_target;
+  Program panel_over;
+  glm::ivec4 panel_box{0};  // x, y, width, height in framebuffer pixels, y up
+  std::chrono::steady_clock::time_point panel_drawn{};
+  glm::dvec2 cursor{-1.0};
+  int panel_draws = 0;  // ImGui lays a window out over its first frames: draw those all
+  bool panel_typing = false, buttons_down = false;
   GLuint empty_vao = 0;
   bool imgui = false;
   bool imgui_glfw = false;
