@@ -131,13 +131,20 @@ class PcfDithered final : public Lesson {
     preset("hw 2x2", "hw2x2", 16);
     ImGui::SameLine();
     preset("none", "none", 16);
-    // Cost and error side by side.
+    // Cost and error side by side, from the last measured frame (not a baseline frame's).
+    const auto& counts = f.measure.lastFrameCounts();
+    const auto count = [&](const char* name) {
+      const auto it = counts.find(name);
+      return it == counts.end() ? 0LL : it->second;
+    };
+    const long long filtered = count("pcf_filtered_fragments");
     const double per_fragment =
-        counts_[1] > 0 ? static_cast<double>(counts_[0]) / static_cast<double>(counts_[1]) : 0.0;
+        filtered > 0 ? static_cast<double>(count("pcf_taps")) / static_cast<double>(filtered) : 0;
     const auto pass = f.measure.medianPassMs();
     const double eye_ms = pass.count("eye") ? pass.at("eye") : 0.0;
     ImGui::Text("cost:  %5.2f taps/fragment, eye pass %.2f ms", per_fragment, eye_ms);
-    ImGui::Text("       skipped: %u facing away, %u after 4 probes", counts_[3], counts_[2]);
+    ImGui::Text("       skipped: %lld facing away, %lld after 4 probes",
+                count("pcf_skipped_facing_away"), count("pcf_stopped_early"));
     const ErrorState& error = f.runner.lastError();
     if (error.valid) {
       ImGui::Text("error: vis_mae %.4f vs an area light r=%.3f", error.metrics.vis_mae,

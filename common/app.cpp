@@ -178,17 +178,21 @@ void Runner::initHeadless() {
   if (options_.panel) {
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;
-    ImGui_ImplOpenGL3_Init("#version 330 core");
-    // The font atlas read NEAREST: its glyphs land on whole pixels, so the panel looks the
-    // same (tested pixel for pixel) and costs a quarter less to draw on a CPU rasterizer.
-    ImGui_ImplOpenGL3_CreateDeviceObjects();
-    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(
-                                     reinterpret_cast<std::intptr_t>(ImGui::GetIO().Fonts->TexID)));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    gpu_->imgui = true;
+    initImGuiGl();
   }
+}
+
+void Runner::initImGuiGl() {
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+  // The font atlas read NEAREST: its glyphs land on whole pixels, so the panel looks the same
+  // (headless panel pictures byte-identical) and costs a quarter less to draw on llvmpipe.
+  ImGui_ImplOpenGL3_CreateDeviceObjects();
+  glBindTexture(GL_TEXTURE_2D,
+                static_cast<GLuint>(reinterpret_cast<std::intptr_t>(ImGui::GetIO().Fonts->TexID)));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  gpu_->imgui = true;
 }
 
 void Runner::releaseGl() {
@@ -241,23 +245,32 @@ void Runner::renderBaselineFrame() {
   if (window_) glfwGetFramebufferSize(gpu_->window, &w, &h);
   gpu_->ensureTargets(w, h);
   // What the lesson's frame told the runner, and what it has still to do (a dirty map must
-  // still be rendered by the next real frame), survive the baseline frame.
-  const std::uint32_t dirty = params_.dirty();
-  const auto frustum = light_frustum_;
-  const float area_radius = truth_area_radius_;
-  const auto medium = medium_;
+  // still be rendered by the next real frame), survive the baseline frame, exception or not.
+  // A scene reload it has done is not done again.
+  struct Restore {
+    Runner& r;
+    Param& off;
+    std::uint32_t dirty;
+    std::optional<glm::mat4> frustum;
+    float area_radius;
+    std::optional<AirMedium> medium;
+    ~Restore() {
+      off.value[0] = 0.0;
+      std::swap(r.measure_, r.baseline_measure_);
+      r.in_baseline_ = false;
+      r.params_.markDirty(dirty & ~kDirtyScene);
+      r.light_frustum_ = frustum;
+      r.truth_area_radius_ = area_radius;
+      r.medium_ = medium;
+    }
+  } restore{*this, *off, params_.dirty(), light_frustum_, truth_area_radius_, medium_};
   std::swap(measure_, baseline_measure_);
+  in_baseline_ = true;
   off->value[0] = 1.0;  // not through Params::set: nothing is dirtied
-  // The first one compiles the unshadowed variants: not timed.
-  renderInto(gpu_->target->id(), w, h, view, /*timed=*/baseline_frames_++ > 0,
-             /*withPanel=*/false);
-  off->value[0] = 0.0;
-  std::swap(measure_, baseline_measure_);
-  params_.markDirty(dirty);
-  light_frustum_ = frustum;
-  truth_area_radius_ = area_radius;
-  medium_ = medium;
-  GlErrorLog::poll();
+  // The first one compiles the unshadowed variants: not timed. The panel, if shown, is laid
+  // over it as over the lesson's frames (never drawn anew: it takes no input here).
+  const bool panel = gpu_->imgui && (window_ ? !options_.hide_panel : options_.panel);
+  renderInto(gpu_->target->id(), w, h, view, /*timed=*/baseline_frames_++ > 0, panel);
 }
 
 double Runner::shadowOverhead() const {
@@ -288,7 +301,7 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
   // In a window the panel is drawn anew only when it may have changed (input, or every
   // quarter second for its numbers) and laid over the other frames from a texture: ImGui's
   // thousands of blended triangles cost a CPU rasterizer as much as some lessons' shadows.
-  const bool draw_panel = withPanel && (!window_ || panelDue(width, height));
+  const bool draw_panel = withPanel && (!window_ || (!in_baseline_ && panelDue(width, height)));
   if (draw_panel) {
     ImGuiIO& io = ImGui::GetIO();
     if (!window_) {

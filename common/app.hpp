@@ -253,6 +253,8 @@ class Runner {
   std::vector<glm::mat4> preset_models_;
   std::unique_ptr<Measure> measure_, baseline_measure_;
   long long baseline_frames_ = 0;
+  bool in_baseline_ = false;
+  void initImGuiGl();  // the ImGui GL backend (both window and headless)
   long long compiled_at_start_ = ProgramVariants::compiledTotal();
   std::unique_ptr<Gpu> gpu_;
   std::shared_ptr<const Truth> truth_;  // shared with a job tracing on another thread

@@ -123,12 +123,13 @@ void Runner::drawObjects(const Frame& frame, const Program& program, Objects whi
   const bool cull_solids = glIsEnabled(GL_CULL_FACE) == GL_FALSE && !offset_map;
   if (cull_solids) glCullFace(GL_BACK);
   if (eye_view) {
-    const auto key = [&](size_t i) {
+    std::vector<std::pair<bool, float>> key(order.size());  // bounds walk every vertex: once
+    for (size_t i = 0; i < key.size(); ++i) {
       const SceneObject& o = scene_.objects[i];
-      return std::make_pair(!o.caster, glm::distance(frame.eye, o.worldBounds().center()));
-    };
+      key[i] = {!o.caster, glm::distance(frame.eye, o.worldBounds().center())};
+    }
     std::stable_sort(order.begin(), order.end(),
-                     [&](size_t a, size_t b) { return key(a) < key(b); });
+                     [&](size_t a, size_t b) { return key[a] < key[b]; });
   }
   for (const size_t i : order) {
     const SceneObject& object = scene_.objects[i];
@@ -144,7 +145,8 @@ void Runner::drawObjects(const Frame& frame, const Program& program, Objects whi
         continue;
       }
     }
-    // Every caster is a closed solid wound counter-clockwise from outside (tested).
+    // Every caster is a closed solid wound counter-clockwise from outside (the winding is
+    // tested; seams close up to float rounding, so a silhouette pixel may move).
     if (cull_solids) object.caster ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
     drawObject(program, i);
   }

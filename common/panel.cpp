@@ -50,10 +50,10 @@ bool Runner::panelDue(int width, int height) {
   const auto now = std::chrono::steady_clock::now();
   // A wheel turn waits in ImGui's io until a panel frame takes it (the orbit camera reads it
   // from there too); typing into a field wants every frame.
-  const bool due = g.panel_draws < 3 || g.panel_color.width() != width ||
-                   g.panel_color.height() != height || cursor != g.cursor || down ||
-                   down != g.buttons_down || g.panel_typing || ImGui::GetIO().MouseWheel != 0.0f ||
-                   now - g.panel_drawn > std::chrono::milliseconds(250);
+  const bool due =
+      g.panel_draws < 3 || g.panel_color.width() != width || g.panel_color.height() != height ||
+      cursor != g.cursor || down || down != g.buttons_down || g.panel_typing || g.panel_input ||
+      ImGui::GetIO().MouseWheel != 0.0f || now - g.panel_drawn > std::chrono::milliseconds(250);
   g.cursor = cursor;
   g.buttons_down = down;
   return due;
@@ -77,12 +77,16 @@ void Runner::drawPanelTexture(int width, int height) {
   glClear(GL_COLOR_BUFFER_BIT);
   const ImDrawData* data = ImGui::GetDrawData();
   ImGui_ImplOpenGL3_RenderDrawData(const_cast<ImDrawData*>(data));
-  // Where it drew (ImGui's y points down, GL's up): the only pixels to lay over the frame.
+  // Where it drew, in framebuffer pixels (ImGui's y points down, GL's up, and a scaled
+  // display has more pixels than window units): the only pixels to lay over the frame.
   glm::vec2 lo(1e9f), hi(-1e9f);
+  const glm::vec2 origin(data->DisplayPos.x, data->DisplayPos.y);
+  const glm::vec2 scale(data->FramebufferScale.x, data->FramebufferScale.y);
   for (int l = 0; l < data->CmdListsCount; ++l) {
     for (const ImDrawVert& v : data->CmdLists[l]->VtxBuffer) {
-      lo = glm::min(lo, glm::vec2(v.pos.x, v.pos.y));
-      hi = glm::max(hi, glm::vec2(v.pos.x, v.pos.y));
+      const glm::vec2 p = (glm::vec2(v.pos.x, v.pos.y) - origin) * scale;
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
     }
   }
   const glm::ivec2 a = glm::clamp(glm::ivec2(glm::floor(lo)), glm::ivec2(0), {width, height});
@@ -91,6 +95,7 @@ void Runner::drawPanelTexture(int width, int height) {
       b.x > a.x && b.y > a.y ? glm::ivec4(a.x, height - b.y, b.x - a.x, b.y - a.y) : glm::ivec4(0);
   g.panel_drawn = std::chrono::steady_clock::now();
   g.panel_typing = ImGui::GetIO().WantTextInput;
+  g.panel_input = false;
   ++g.panel_draws;
 }
 

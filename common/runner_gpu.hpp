@@ -40,7 +40,8 @@ struct Runner::Gpu {
   glm::ivec4 panel_box{0};  // x, y, width, height in framebuffer pixels, y up
   std::chrono::steady_clock::time_point panel_drawn{};
   glm::dvec2 cursor{-1.0};
-  int panel_draws = 0;  // ImGui lays a window out over its first frames: draw those all
+  bool panel_input = false;  // a click, key, character or wheel turn since the last draw
+  int panel_draws = 0;       // ImGui lays a window out over its first frames: draw those all
   bool panel_typing = false, buttons_down = false;
   GLuint empty_vao = 0;
   bool imgui = false;

@@ -48,9 +48,19 @@ int Runner::runWindow() {
   initGl();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
+  // Any input since the panel was last drawn asks for it anew (panelDue): these callbacks run
+  // first, then ImGui's, which it chains to them.
+  glfwSetWindowUserPointer(window, gpu_.get());
+  static constexpr auto input = [](GLFWwindow* w) {
+    static_cast<Gpu*>(glfwGetWindowUserPointer(w))->panel_input = true;
+  };
+  glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int, int, int) { input(w); });
+  glfwSetScrollCallback(window, [](GLFWwindow* w, double, double) { input(w); });
+  glfwSetKeyCallback(window, [](GLFWwindow* w, int, int, int, int) { input(w); });
+  glfwSetCharCallback(window, [](GLFWwindow* w, unsigned int) { input(w); });
   ImGui_ImplGlfw_InitForOpenGL(window, true);
-  ImGui_ImplOpenGL3_Init("#version 330 core");
-  gpu_->imgui = gpu_->imgui_glfw = true;
+  initImGuiGl();
+  gpu_->imgui_glfw = true;
 
   double last_x = 0, last_y = 0;
   bool h_was_down = false;
@@ -118,8 +128,10 @@ int Runner::runWindow() {
       }
       // The panel's "shadow: N x the frame without it": one frame in 32 is rendered again,
       // off-screen, with shadow.off.
-      if (!options_.hide_panel && frame_number++ % 32 == 0) renderBaselineFrame();
       renderInto(0, w, h, params_.at("view").choice(), true, !options_.hide_panel);
+      // After the frame, so the panel's numbers (drawn first thing in a frame) are the
+      // lesson's, not the baseline's.
+      if (!options_.hide_panel && frame_number++ % 32 == 0) renderBaselineFrame();
       GlErrorLog::poll();
       if (screenshot_requested_) {
         screenshot_requested_ = false;

@@ -49,5 +49,21 @@ TEST(TruthOffTheRenderThread, ASliderMovedDuringTheTraceLeavesItStaleAndTheNextM
   expectSameMetrics(stale, fresh->measureError().metrics, "light moved during the trace");
 }
 
+TEST(TruthOffTheRenderThread, ATruthBuiltForGeometryThatMovedMeanwhileIsNotKept) {
+  // Lesson 01 tilts its receiver: the truth's triangles change. A trace begun before the tilt
+  // builds its Truth from the old triangles; it must not be kept for the new ones.
+  auto runner = testing::startLesson("01_projected_planar", {}, 160, 120);
+  runner->renderFrame();
+  runner->beginErrorMeasure();
+  ASSERT_EQ(runner->params().set("plane.tilt", "20"), "");
+  runner->renderFrame();  // moves the receiver: the runner drops its truth
+  while (!runner->pollErrorMeasure()) runner->renderFrame();
+  const ErrorMetrics tilted = runner->measureError().metrics;
+
+  auto fresh = testing::startLesson("01_projected_planar", {"plane.tilt=20"}, 160, 120);
+  fresh->renderFrame();
+  expectSameMetrics(tilted, fresh->measureError().metrics, "receiver tilted during the trace");
+}
+
 }  // namespace
 }  // namespace shadows

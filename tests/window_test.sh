@@ -39,3 +39,14 @@ if cmp -s "$out/w.png" "$out/hidden.png"; then
   exit 1
 fi
 echo "hidden panel ok"
+# Past its first frames the panel is laid from its cached texture, not drawn anew: still
+# there at frame 12 (a picture unlike the hidden-panel one, and not blank).
+xvfb-run -a -s "-screen 0 1024x768x24" "$first" --window --size 320x240 --frames 12 \
+  --out "$out/cached.png"
+xvfb-run -a -s "-screen 0 1024x768x24" "$first" --window --size 320x240 --frames 12 \
+  --hide-panel --out "$out/cached_hidden.png"
+if cmp -s "$out/cached.png" "$out/cached_hidden.png"; then
+  echo "frame 12: the cached panel was not laid over the frame"
+  exit 1
+fi
+echo "cached panel ok"

@@ -10,8 +10,8 @@ void main() {
   // true surface.
   vec3 n = normalize(cross(dFdx(vWorld), dFdy(vWorld)));
   float object = float(uObject);
-  // A surface seen from behind (the inside of a closed object, the underside of the floor)
-  // is not counted: the eye is where no lesson's picture means anything.
+  // A surface seen from behind (the underside of the floor; a solid's inside is culled before
+  // it gets here) is not counted: the eye is where no lesson's picture means anything.
   if (!gl_FrontFacing) object = -1.0;
   if (uHasLightFrustum == 1) {
     vec4 c = uLightViewProjection * vec4(vWorld, 1.0);
