@@ -79,13 +79,10 @@ class DualTexture8bit final : public Lesson {
   // dual_texture.frag compiled as PASS 1 or 2 (0: the one-value views) for this view,
   // ramp.lookup and shadow.off (pass 1 lit, no map), with this frame's uniforms set.
   const Program& pass(const Frame& f, int number, bool unshadowed = false) {
-    const Program& program =
-        variants_.get({define("PASS", number), define("SHADOW_OFF", unshadowed),
-                       ramp_lookup_.defines(), f.viewDefines()});
-    program.set("uViewProjection", f.projection * f.view);
-    map_.bindForLookup(f, program);
-    f.setLightingUniforms(program, dimming_());
-    return program;
+    return map_.eyePass(f,
+                        variants_.get({define("PASS", number), define("SHADOW_OFF", unshadowed),
+                                       ramp_lookup_.defines(), f.viewDefines()}),
+                        dimming_());
   }
 
   void drawPasses(Frame& f) {

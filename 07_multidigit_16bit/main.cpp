@@ -116,13 +116,11 @@ class MultiDigit16bit final : public Lesson {
   // Pass 1, 2 (multidigit.frag) or 3 (its early-tests twin) compiled for this view and
   // shadow.off (pass 1 lit, no map), with this frame's uniforms set.
   const Program& pass(const Frame& f, int number, bool unshadowed = false) {
-    const Program& program =
-        (number == 3 ? pass3_ : passes_)
-            .get({define("PASS", number), define("SHADOW_OFF", unshadowed), f.viewDefines()});
-    program.set("uViewProjection", f.projection * f.view);
-    map_.bindForLookup(f, program);
-    f.setLightingUniforms(program, dimming_());
-    return program;
+    ProgramVariants& variants = number == 3 ? pass3_ : passes_;
+    return map_.eyePass(
+        f,
+        variants.get({define("PASS", number), define("SHADOW_OFF", unshadowed), f.viewDefines()}),
+        dimming_());
   }
 
   long long countLit(const Frame& f, const Program& program, int index) {

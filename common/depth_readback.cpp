@@ -293,6 +293,13 @@ void DepthReadback::bindForLookup(const Frame& f, const Program& program) const 
   program.set("uTexgenBias", texgenBias(f));
 }
 
+const Program& DepthReadback::eyePass(const Frame& f, const Program& program, float dimming) const {
+  program.set("uViewProjection", f.projection * f.view);
+  bindForLookup(f, program);
+  f.setLightingUniforms(program, dimming);
+  return program;
+}
+
 bool DepthReadback::drawBasePass(Frame& f, const Program& program, bool color) const {
   auto timing = f.measure.pass("pass1", /*countPassed=*/true);
   PassState state;

@@ -38,6 +38,9 @@ class DepthReadback {
   // to unit 2), and sets what the eye shaders of 06/07 read: uMap, uRamp(Big), uMapIsDepth,
   // uReadbackNearest, uLinear, uShadowMatrix, uLinearPlane, uTexgenBias.
   void bindForLookup(const Frame& frame, const Program& program) const;
+  // An eye pass of 06/07 ready to draw: bindForLookup, the camera and the lighting (with
+  // `dimming`) set on `program`, which it returns.
+  const Program& eyePass(const Frame& frame, const Program& program, float dimming) const;
   // Pass 1 of the slides' multi-pass compare, timed as "pass1": everything drawn dimmed with
   // `program`, laying the depth the lit passes must GL_EQUAL (with `color` off it still lays
   // it, in no colour). With shadow.off the baseline instead: `program` (the lesson's pass 1

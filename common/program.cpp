@@ -167,7 +167,6 @@ const Program& ProgramVariants::get(std::initializer_list<std::vector<std::strin
       selected += (selected.empty() ? "" : ", ") + line;
     }
   }
-  last_key_ = key;
   g_used.push_back(fragment_.filename().string() + ": " + selected);
   auto it = programs_.find(key);
   if (it == programs_.end()) {

@@ -46,10 +46,8 @@ class ProgramVariants {
   // The program for these defines, each part the lines one setting contributes:
   // get({pcf_mode_.defines(), define("PCF_COUNT", counting), frame.viewDefines()}).
   const Program& get(std::initializer_list<std::vector<std::string>> parts);
-  // How many variants were compiled so far, and the defines of the last one asked for (a
-  // frame's choice of variant, for the report and the tests).
+  // How many variants this one compiled so far.
   size_t compiled() const { return programs_.size(); }
-  const std::string& lastKey() const { return last_key_; }
   // Every get() since the last call, as "scene.frag: PCF_MODE=PCF_MODE_GRID, ...": the runner
   // records which variant each pass of a frame ran (the report's shader_variants).
   static std::vector<std::string> takeUsed();
@@ -59,7 +57,6 @@ class ProgramVariants {
  private:
   std::filesystem::path vertex_, fragment_;
   std::map<std::string, Program> programs_;  // by the defines, joined
-  std::string last_key_;
 };
 
 // One #define line, "NAME value", for a setting that is not a parameter (a pass number).

@@ -27,8 +27,6 @@ class ShadowMap {
     state.offset_units = units;
     return state;
   }
-  // Binds the map's framebuffer, sets the viewport and clears the depth.
-  void beginRender() const;
   // Pass 1, timed as "shadow": beginRender, then `state` (a bias), then the casters inside the
   // light frustum (the others are culled and counted) with `depthProgram`, whose
   // uLightViewProjection = P_light * V_light is set here; leaves the default state behind.
@@ -58,6 +56,8 @@ class ShadowMap {
   float texelWorldSize(float distance) const { return light_.texelWorldSize(distance); }
 
  private:
+  // Binds the map's framebuffer, sets the viewport and clears the depth.
+  void beginRender() const;
   LightView light_;
   Texture texture_;
   std::unique_ptr<Framebuffer> framebuffer_;
