@@ -17,6 +17,7 @@
 
 #include "arguments.hpp"
 #include "bench.hpp"
+#include "text.hpp"
 
 namespace shadows::bench {
 namespace {
@@ -135,7 +136,7 @@ int sweepMain(int argc, char** argv) {
   Options o;
   bool all = false;
   if (std::string e = parse(argc, argv, o, all); !e.empty()) {
-    std::fprintf(stderr, "bench_sweep: %s\n", e.c_str());
+    std::fprintf(stderr, "bench_sweep: %s\n", printable(e).c_str());
     return 2;
   }
   std::vector<std::string> with_sweep;
@@ -145,12 +146,12 @@ int sweepMain(int argc, char** argv) {
   for (const auto& lesson : o.lessons) {
     if (std::find(with_sweep.begin(), with_sweep.end(), lesson) == with_sweep.end()) {
       std::fprintf(stderr, "bench_sweep: no sweep for lesson '%s'; lessons with one: %s\n",
-                   lesson.c_str(), joined(with_sweep).c_str());
+                   printable(lesson).c_str(), joined(with_sweep).c_str());
       return 2;
     }
     // A bad --set stops here, before anything is rendered, with the runner's own message.
     if (std::string e = checkSets(lesson, allSweeps().at(lesson), o.sets); !e.empty()) {
-      std::fprintf(stderr, "bench_sweep: %s\n", e.c_str());
+      std::fprintf(stderr, "bench_sweep: %s\n", printable(e).c_str());
       return 2;
     }
   }
@@ -159,7 +160,8 @@ int sweepMain(int argc, char** argv) {
   std::filesystem::create_directories(o.out_dir, ec);
   const auto probe = o.out_dir / ".bench_sweep_probe";
   if (ec || !std::ofstream(probe)) {
-    std::fprintf(stderr, "bench_sweep: cannot write into %s\n", o.out_dir.string().c_str());
+    std::fprintf(stderr, "bench_sweep: cannot write into %s\n",
+                 printable(o.out_dir.string()).c_str());
     return 2;
   }
   std::filesystem::remove(probe, ec);

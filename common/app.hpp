@@ -130,9 +130,10 @@ struct RunOptions {
   std::string backend = "osmesa";
   int width = 800, height = 600;
   int frames = 5;
-  bool panel = false;       // draw the ImGui panel into headless snapshots too
-  bool hide_panel = false;  // a window without the panel (key H toggles it)
-  bool truth = true;        // measure error against the ray-traced truth
+  bool frames_given = false;  // --frames on the command line: a window run stops after them
+  bool panel = false;         // draw the ImGui panel into headless snapshots too
+  bool hide_panel = false;    // a window without the panel (key H toggles it)
+  bool truth = true;          // measure error against the ray-traced truth
   std::string out, report, truth_out, error_out;
   std::vector<std::string> sets;
   bool list_params = false, help = false;
@@ -242,6 +243,7 @@ class Runner {
   glm::mat4 cameraView() const;
   glm::mat4 cameraProjection(int width, int height) const;
   static constexpr int kNoWindow = -1;  // runWindow could not open one
+  std::string window_error_;            // and why, as GLFW said it
   int runWindow();
   int runHeadless();
 

@@ -1,6 +1,8 @@
 #include "arguments.hpp"
 
-#include "image.hpp"  // printable
+#include <algorithm>
+
+#include "text.hpp"
 
 namespace shadows {
 
@@ -13,8 +15,10 @@ bool Arguments::value(std::string& out) {
 
 bool parsePositive(const std::string& text, int& out, int max) {
   if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos) return false;
-  if (text.size() > 6) return false;
-  const int n = std::stoi(text);
+  // Leading zeros are the same number, for every flag ("00064", "00001").
+  const std::string digits = text.substr(std::min(text.find_first_not_of('0'), text.size() - 1));
+  if (digits.size() > 9) return false;
+  const int n = std::stoi(digits);
   if (n < 1 || n > max) return false;
   out = n;
   return true;

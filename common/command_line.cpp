@@ -4,6 +4,8 @@
 #include "arguments.hpp"
 #include "context.hpp"
 #include "json.hpp"
+#include "output_files.hpp"
+#include "text.hpp"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -33,9 +35,11 @@ const char* kUsage =
     "  --window             a window even when DISPLAY is unset (fails without a display)\n"
     "  --backend NAME       headless context: osmesa (default) or egl (surfaceless)\n"
     "  --size WxH           image size (default 800x600)\n"
-    "  --frames N           timed frames after one warm-up frame (default 5)\n"
+    "  --frames N           timed frames after one warm-up frame (default 5; in a window:\n"
+    "                       render N frames, write the outputs asked for, exit)\n"
     "  --out FILE.png       write the final frame (default out/LESSON.png; in a window:\n"
-    "                       --frames frames, then exit)\n"
+    "                       --frames frames, then exit). Outputs may be links (written\n"
+    "                       through), devices or pipes (written in place), /dev/stdout\n"
     "  --panel              draw the ImGui panel into the headless picture too\n"
     "  --hide-panel         a window without the panel (the key H shows and hides it)\n"
     "  --set name=value     set a parameter (repeatable); see --list-params\n"
@@ -47,33 +51,20 @@ const char* kUsage =
     "  --help               this text\n"
     "exit codes: 0 ok, 1 runtime failure (no context, shader error, GL error), 2 bad input\n";
 
-bool isDevice(const std::string& path) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  return std::filesystem::exists(status) && !std::filesystem::is_regular_file(status);
-}
-
-// "" or why `path` cannot be the output `flag` names (exit 2 before anything is rendered).
-std::string outputProblem(const std::string& flag, const std::string& path) {
-  std::string shown = "'";
-  shown += printable(path);
-  shown += "'";
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    return flag + ": cannot write " + shown + " (it is a directory)";
+// "" or why `path` cannot be the output `flag` names (exit 2 before anything is rendered);
+// `target` says where the bytes will go.
+std::string outputProblem(const std::string& flag, const std::string& path, OutputTarget& target) {
+  std::string shown = printable(path);
+  if (shown.size() > 80) shown = shown.substr(0, 60) + "...";
+  if (std::string why = resolveOutput(path, target); !why.empty()) {
+    return flag + ": cannot write '" + shown + "' (" + why + ")";
   }
-  const std::string name = std::filesystem::path(path).filename().string();
-  if (name.size() > 255 || path.size() > 4095) {
-    return flag + ": cannot write " + shown.substr(0, 60) + "... (file name too long)";
-  }
-  if (!canWrite(path)) {
-    return flag + ": cannot write " + shown + " (no such directory, or read-only)";
-  }
-  if (flag != "--report" && !isDevice(path)) {
+  // A picture goes into a .png; a device or a pipe takes whatever it is given.
+  if (flag != "--report" && target.kind == OutputTarget::Kind::Replace) {
     std::string extension = std::filesystem::path(path).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (extension != ".png") return flag + ": expected a .png file name, got " + shown;
+    if (extension != ".png") return flag + ": expected a .png file name, got '" + shown + "'";
   }
   return {};
 }
@@ -81,6 +72,21 @@ std::string outputProblem(const std::string& flag, const std::string& path) {
 }  // namespace
 
 std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
+  struct Output {
+    const char* flag;
+    std::string* path;
+    OutputTarget target;
+  };
+  Output outputs[] = {{"--out", &o.out, {}},
+                      {"--report", &o.report, {}},
+                      {"--truth-out", &o.truth_out, {}},
+                      {"--error-out", &o.error_out, {}}};
+  auto outputNamed = [&](const std::string& flag) -> Output* {
+    for (Output& output : outputs) {
+      if (flag == output.flag) return &output;
+    }
+    return nullptr;
+  };
   for (Arguments args(argc, argv); args.next();) {
     const std::string& arg = args.flag();
     std::string value, why;
@@ -107,35 +113,27 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
       why = readSize(args, o.width, o.height);
     } else if (arg == "--frames") {
       why = readCount(args, o.frames, 100000);
+      o.frames_given = true;
     } else if (arg == "--set") {
       why = readSet(args, o.sets);
-    } else if (arg == "--out" || arg == "--report" || arg == "--truth-out" ||
-               arg == "--error-out") {
+    } else if (Output* output = outputNamed(arg)) {
       if (!args.value(value)) return arg + ": expected a file name";
-      if (why = outputProblem(arg, value); !why.empty()) return why;
-      (arg == "--out"         ? o.out
-       : arg == "--report"    ? o.report
-       : arg == "--truth-out" ? o.truth_out
-                              : o.error_out) = value;
+      if (why = outputProblem(arg, value, output->target); !why.empty()) return why;
+      *output->path = value;
     } else {
       return unknownOption(arg);
     }
     if (!why.empty()) return why;
   }
-  // Two outputs into one regular file would leave only the last: refuse it up front.
-  const std::pair<const char*, const std::string*> outputs[] = {{"--out", &o.out},
-                                                                {"--report", &o.report},
-                                                                {"--truth-out", &o.truth_out},
-                                                                {"--error-out", &o.error_out}};
+  // Two outputs into one file would leave only the last: refuse it up front, however the two
+  // names spell it (./a.png, sub/../a.png, a link, a hard link). Only a character device such
+  // as /dev/null may take several.
   for (size_t i = 0; i < std::size(outputs); ++i) {
     for (size_t j = i + 1; j < std::size(outputs); ++j) {
-      const std::string &a = *outputs[i].second, &b = *outputs[j].second;
-      if (a.empty() || b.empty() || isDevice(a)) continue;
-      std::error_code ec;
-      if (std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec)) {
-        return std::string(outputs[i].first) + " and " + outputs[j].first +
-               " name the same file '" + printable(a) + "'";
-      }
+      const OutputTarget &a = outputs[i].target, &b = outputs[j].target;
+      if (a.identity.empty() || a.identity != b.identity || a.character_device) continue;
+      return std::string(outputs[i].flag) + " and " + outputs[j].flag + " name the same file '" +
+             printable(*outputs[j].path) + "'";
     }
   }
   return {};
@@ -147,33 +145,28 @@ int runLessonMain(int argc, char** argv) {
     std::fprintf(stderr, "expected exactly one lesson in this binary\n");
     return 1;
   }
+  // Every message leaves through here: one line, whatever bytes the user gave us.
+  const auto complain = [&](const std::string& message, int exit_code) {
+    std::fprintf(stderr, "%s: %s\n", lessons[0].c_str(), printable(message).c_str());
+    return exit_code;
+  };
   RunOptions options;
-  if (std::string e = parseCommandLine(argc, argv, options); !e.empty()) {
-    std::fprintf(stderr, "%s: %s\n", lessons[0].c_str(), e.c_str());
-    return 2;
-  }
+  if (std::string e = parseCommandLine(argc, argv, options); !e.empty()) return complain(e, 2);
   if (options.help) {
     std::printf(kUsage, argv[0]);
     return 0;
   }
   try {
     Runner runner(lessons[0], makeLesson(lessons[0]), options);
-    if (std::string e = runner.applySets(options.sets); !e.empty()) {
-      std::fprintf(stderr, "%s: %s\n", lessons[0].c_str(), e.c_str());
-      return 2;
-    }
-    if (std::string e = runner.checkConsistency(); !e.empty()) {
-      std::fprintf(stderr, "%s: %s\n", lessons[0].c_str(), e.c_str());
-      return 2;
-    }
+    if (std::string e = runner.applySets(options.sets); !e.empty()) return complain(e, 2);
+    if (std::string e = runner.checkConsistency(); !e.empty()) return complain(e, 2);
     if (options.list_params) {
       std::printf("%s", runner.params().listText().c_str());
       return 0;
     }
     return runner.run();
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s: %s\n", lessons[0].c_str(), e.what());
-    return 1;
+    return complain(e.what(), 1);
   }
 }
 

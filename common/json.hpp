@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "text.hpp"
+
 namespace shadows {
 
 class JsonWriter {
@@ -44,19 +46,29 @@ class JsonWriter {
   JsonWriter& value(const std::string& key, const char* v) { return value(key, std::string(v)); }
   const std::string& str() const { return out_; }
 
+  // A JSON string. Bytes that are not UTF-8 (a file name in another encoding) cannot be
+  // JSON text: each is written as the four characters \xNN, as printable() shows it.
   static std::string quote(const std::string& s) {
     std::string q = "\"";
-    for (char c : s) {
+    for (size_t i = 0; i < s.size();) {
+      const auto c = static_cast<unsigned char>(s[i]);
+      const size_t length = utf8SequenceLength(s, i);
+      char buf[8];
       if (c == '"' || c == '\\') {
         q += '\\';
-        q += c;
-      } else if (static_cast<unsigned char>(c) < 0x20) {
-        char buf[8];
+        q += static_cast<char>(c);
+      } else if (c < 0x20) {
         std::snprintf(buf, sizeof buf, "\\u%04x", c);
         q += buf;
+      } else if (length == 0) {
+        std::snprintf(buf, sizeof buf, "\\\\x%02X", c);
+        q += buf;
       } else {
-        q += c;
+        q.append(s, i, length);
+        i += length;
+        continue;
       }
+      ++i;
     }
     return q + "\"";
   }

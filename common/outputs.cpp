@@ -106,10 +106,14 @@ int Runner::run() {
   }
   const int result = runWindow();
   if (result != kNoWindow) return result;
-  if (options_.force_window) return 1;
-  // A DISPLAY that leads nowhere (a closed ssh tunnel, a stale variable): say so, go on.
-  std::printf("%s: cannot open a window on DISPLAY=%s, rendering headless\n", name_.c_str(),
-              has_display ? display : "");
+  const std::string why = printable(window_error_.empty() ? "unknown reason" : window_error_);
+  if (options_.force_window) {
+    std::fprintf(stderr, "%s: cannot open a window (%s)\n", name_.c_str(), why.c_str());
+    return 1;
+  }
+  // A DISPLAY that leads nowhere (a closed ssh tunnel, a stale variable): say so once, go on.
+  std::printf("%s: cannot open a window on DISPLAY=%s (%s), rendering headless\n", name_.c_str(),
+              has_display ? printable(display).c_str() : "", why.c_str());
   return runHeadless();
 }
 

@@ -5,11 +5,15 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cfloat>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <system_error>
 #include <utility>
 
 #include "json.hpp"
@@ -32,7 +36,9 @@ bool parseNumber(const std::string& text, double& out) {
   errno = 0;
   char* end = nullptr;
   out = std::strtod(text.c_str(), &end);
-  return errno == 0 && end == text.c_str() + text.size() && std::isfinite(out);
+  // Underflow (1e-320) is a number, the nearest one; overflow (1e400) is not.
+  const bool range_ok = errno == 0 || (errno == ERANGE && std::abs(out) <= DBL_MIN);
+  return range_ok && end == text.c_str() + text.size() && std::isfinite(out);
 }
 
 std::string joined(const std::vector<std::string>& items) {
@@ -78,9 +84,18 @@ std::string allowed(const Param& p) {
 }
 
 // Ranges are declared as floats: compare in float so "0.001" is inside [0.001f, ...].
+// In double precision, against the bounds as the decimals they were written as (addFloat's
+// 0.1f is 0.1 here, not 0.100000001): 4.9999999 is below a minimum of 5 even though it
+// rounds to 5.0f.
+// The shortest decimal that reads back as `f`: the bound as the source wrote it.
+double asWritten(float f) {
+  char buf[32];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, f);
+  return ec == std::errc() ? std::strtod(std::string(buf, end).c_str(), nullptr) : f;
+}
+
 bool inRange(const Param& p, double v) {
-  const auto f = static_cast<float>(v);
-  return f >= static_cast<float>(p.min) && f <= static_cast<float>(p.max);
+  return v >= p.min && v <= p.max;
 }
 
 // "pcf.early_out" -> PCF_EARLY_OUT: a preprocessor name.
@@ -165,7 +180,8 @@ Param& Params::add(Param p) {
 Param& Params::addFloat(const std::string& name, float def, float min, float max,
                         const std::string& help, std::uint32_t affects) {
   Param p;
-  p.name = name, p.help = help, p.kind = ParamKind::Float, p.min = min, p.max = max;
+  p.name = name, p.help = help, p.kind = ParamKind::Float, p.min = asWritten(min),
+  p.max = asWritten(max);
   p.value[0] = def, p.affects = affects;
   return add(std::move(p));
 }
@@ -189,7 +205,8 @@ Param& Params::addBool(const std::string& name, bool def, const std::string& hel
 Param& Params::addVec3(const std::string& name, glm::vec3 def, float min, float max,
                        const std::string& help, std::uint32_t affects) {
   Param p;
-  p.name = name, p.help = help, p.kind = ParamKind::Vec3, p.min = min, p.max = max;
+  p.name = name, p.help = help, p.kind = ParamKind::Vec3, p.min = asWritten(min),
+  p.max = asWritten(max);
   p.value[0] = def.x, p.value[1] = def.y, p.value[2] = def.z, p.affects = affects;
   return add(std::move(p));
 }

@@ -24,8 +24,17 @@
 namespace shadows {
 
 int Runner::runWindow() {
-  glfwSetErrorCallback(
-      [](int, const char* description) { std::fprintf(stderr, "GLFW: %s\n", description); });
+  // Until a window is open, GLFW's complaint is kept for the one line run() prints about it;
+  // after that, it is printed as it comes.
+  static std::string* opening_error = &window_error_;
+  opening_error = &window_error_;
+  glfwSetErrorCallback([](int, const char* description) {
+    if (opening_error != nullptr) {
+      *opening_error = description;
+    } else {
+      std::fprintf(stderr, "GLFW: %s\n", printable(description).c_str());
+    }
+  });
   if (!glfwInit()) return kNoWindow;
   window_ = true;
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
@@ -35,11 +44,12 @@ int Runner::runWindow() {
   GLFWwindow* window = glfwCreateWindow(
       options_.width, options_.height, (name_ + ": " + lesson_->title()).c_str(), nullptr, nullptr);
   if (window == nullptr) {
-    std::fprintf(stderr, "%s: cannot open a 4.5 core window\n", name_.c_str());
+    if (window_error_.empty()) window_error_ = "no 4.5 core context";
     glfwTerminate();
     window_ = false;
     return kNoWindow;
   }
+  opening_error = nullptr;
   glfwMakeContextCurrent(window);
   glfwSwapInterval(1);
   if (gladLoadGL(glfwGetProcAddress) == 0) throw GlFailure("glad could not load GL");
@@ -67,9 +77,12 @@ int Runner::runWindow() {
   bool dragging = false;
   auto changed_at = std::chrono::steady_clock::now();
   std::string last_key;
-  // With --out, a windowed run renders --frames frames, saves the window and exits: that is
-  // how the tests check the real window path under xvfb.
-  int frames_left = options_.out.empty() ? -1 : options_.frames + 1;
+  // With an output or --frames, a windowed run renders --frames frames, writes what was asked
+  // for and exits: that is how the tests check the real window path under xvfb.
+  const bool scripted = options_.frames_given || !options_.out.empty() ||
+                        !options_.report.empty() || !options_.truth_out.empty() ||
+                        !options_.error_out.empty();
+  int frames_left = scripted ? options_.frames + 1 : -1;
   long long frame_number = 0;
   bool outputs_failed = false;
   while (!glfwWindowShouldClose(window) && frames_left != 0) {

@@ -7,7 +7,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 packages=(build-essential cmake pkg-config python3-glad
   libglfw3-dev libglm-dev libosmesa6-dev libegl-dev libegl-mesa0 libimgui-dev libstb-dev
-  libembree-dev libgtest-dev libbenchmark-dev xvfb xauth gnuplot-nox)
+  libembree-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev xvfb xauth gnuplot-nox)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

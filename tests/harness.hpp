@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <cstdlib>
 #include <memory>
@@ -74,25 +76,53 @@ inline std::string label(const std::vector<std::string>& sets) {
   return text;
 }
 
-// A number from the lesson's --report (as the binary would write it).
-inline double reportNumber(Runner& runner, const std::string& key) {
+// The lesson's --report, as the binary would write it, read by a real JSON parser (a report
+// that is not JSON fails the test), keys in the order written.
+inline nlohmann::ordered_json report(Runner& runner) {
   JsonWriter json;
   runner.writeReport(json);
-  const auto at = json.str().find("\"" + key + "\": ");
-  EXPECT_NE(at, std::string::npos) << key;
-  return at == std::string::npos ? 0.0 : std::stod(json.str().substr(at + key.size() + 4));
+  nlohmann::ordered_json parsed = nlohmann::ordered_json::parse(json.str(), nullptr, false);
+  EXPECT_FALSE(parsed.is_discarded()) << "the report is not JSON:\n" << json.str();
+  return parsed;
+}
+
+// The one value named `key` anywhere in the report, or a JSON pointer ("/error/vis_mae").
+// A key that is missing or found twice fails the test: the caller must say which it means.
+inline nlohmann::ordered_json reportValue(Runner& runner, const std::string& key) {
+  const nlohmann::ordered_json whole = report(runner);
+  if (!key.empty() && key[0] == '/') {
+    const nlohmann::ordered_json::json_pointer at(key);
+    EXPECT_TRUE(whole.contains(at)) << key;
+    return whole.contains(at) ? whole.at(at) : nlohmann::ordered_json();
+  }
+  std::vector<nlohmann::ordered_json> found;
+  const auto search = [&](const auto& self, const nlohmann::ordered_json& node) -> void {
+    if (node.is_object()) {
+      for (const auto& [name, child] : node.items()) {
+        if (name == key) found.push_back(child);
+        self(self, child);
+      }
+    } else if (node.is_array()) {
+      for (const auto& child : node) self(self, child);
+    }
+  };
+  search(search, whole);
+  EXPECT_EQ(found.size(), 1u) << key << " is in the report " << found.size() << " times";
+  return found.empty() ? nlohmann::ordered_json() : found.front();
+}
+
+// A number from the lesson's --report.
+inline double reportNumber(Runner& runner, const std::string& key) {
+  const nlohmann::ordered_json v = reportValue(runner, key);
+  EXPECT_TRUE(v.is_number()) << key << " = " << v.dump();
+  return v.is_number() ? v.get<double>() : 0.0;
 }
 
 // A string from the lesson's --report ("" when the key is missing).
 inline std::string reportString(Runner& runner, const std::string& key) {
-  JsonWriter json;
-  runner.writeReport(json);
-  const std::string text = json.str(), quoted = "\"" + key + "\": \"";
-  const auto at = text.find(quoted);
-  EXPECT_NE(at, std::string::npos) << key;
-  if (at == std::string::npos) return {};
-  const auto start = at + quoted.size();
-  return text.substr(start, text.find('"', start) - start);
+  const nlohmann::ordered_json v = reportValue(runner, key);
+  EXPECT_TRUE(v.is_string()) << key << " = " << v.dump();
+  return v.is_string() ? v.get<std::string>() : std::string();
 }
 
 // Each settings list, on a fresh lesson: no GL error, no NaN or Inf anywhere it draws.

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <nlohmann/json.hpp>
+
+#include "text.hpp"
 
 namespace shadows {
 namespace {
@@ -24,6 +27,47 @@ TEST(JsonWriter, NestsEscapesAndWritesNonFiniteAsNull) {
   EXPECT_NE(s.find("1,"), std::string::npos) << s;
   EXPECT_EQ(std::count(s.begin(), s.end(), '{'), std::count(s.begin(), s.end(), '}'));
   EXPECT_EQ(std::count(s.begin(), s.end(), '['), std::count(s.begin(), s.end(), ']'));
+}
+
+}  // namespace
+}  // namespace shadows
+
+namespace shadows {
+namespace {
+
+// Every report goes through a real parser: what the writer makes of any bytes a user can put
+// in a string (a file name in Latin-1, control characters) must parse, and say them back.
+TEST(JsonWriter, AnyBytesInAStringStillMakeJson) {
+  const std::string nasty = std::string("caf\xc3\xa9 \xff\xfe.png \x01\x7f tab\t \"q\" \\ ") +
+                            "\xe2\x82" + /* a cut sequence */ " \xed\xa0\x80" /* a surrogate */;
+  JsonWriter json;
+  json.beginObject();
+  json.value("path", nasty);
+  json.endObject();
+  const auto parsed = nlohmann::json::parse(json.str(), nullptr, false);
+  ASSERT_FALSE(parsed.is_discarded()) << json.str();
+  EXPECT_EQ(parsed["path"].get<std::string>(),
+            "caf\xc3\xa9 \\xFF\\xFE.png \x01\x7f tab\t \"q\" \\ \\xE2\\x82 \\xED\\xA0\\x80");
+}
+
+TEST(Printable, OneLineOfValidUtf8AndIdempotent) {
+  const std::string raw = "a\nb\rc\td\x01\x7f\xff caf\xc3\xa9";
+  const std::string shown = printable(raw);
+  EXPECT_EQ(shown, "a\\nb\\rc\\td\\x01\\x7F\\xFF caf\xc3\xa9");
+  EXPECT_EQ(printable(shown), shown) << "printing a message twice must not change it";
+  for (const char c : shown) EXPECT_GE(static_cast<unsigned char>(c), 0x20) << shown;
+}
+
+TEST(Utf8, WellFormedSequencesOnly) {
+  EXPECT_EQ(utf8SequenceLength("a", 0), 1u);
+  EXPECT_EQ(utf8SequenceLength("\xc3\xa9", 0), 2u);
+  EXPECT_EQ(utf8SequenceLength("\xe2\x82\xac", 0), 3u);
+  EXPECT_EQ(utf8SequenceLength("\xf0\x9f\x98\x80", 0), 4u);
+  EXPECT_EQ(utf8SequenceLength("\xc0\xaf", 0), 0u) << "overlong";
+  EXPECT_EQ(utf8SequenceLength("\xed\xa0\x80", 0), 0u) << "surrogate";
+  EXPECT_EQ(utf8SequenceLength("\xf4\x90\x80\x80", 0), 0u) << "above U+10FFFF";
+  EXPECT_EQ(utf8SequenceLength("\xe2\x82", 0), 0u) << "cut short";
+  EXPECT_EQ(utf8SequenceLength("\x80", 0), 0u) << "a continuation alone";
 }
 
 }  // namespace

@@ -50,3 +50,13 @@ if cmp -s "$out/cached.png" "$out/cached_hidden.png"; then
   exit 1
 fi
 echo "cached panel ok"
+# Outputs without --out, or --frames alone, are honoured too: the run stops after its frames
+# (a timeout turns "ignored, the window stays open" into a failure) and writes what was asked.
+timeout 120 xvfb-run -a -s "-screen 0 1024x768x24" "$first" --window --size 320x240 --frames 2 \
+  --report "$out/only.json" --truth-out "$out/only_truth.png"
+test -s "$out/only.json" && test -s "$out/only_truth.png" ||
+  { echo "a window run with --report and --truth-out but no --out wrote nothing"; exit 1; }
+grep -q '"frames": 2' "$out/only.json" || { echo "the window ignored --frames"; exit 1; }
+timeout 120 xvfb-run -a -s "-screen 0 1024x768x24" "$first" --window --size 320x240 --frames 1 \
+  --no-truth
+echo "outputs without --out ok"
