@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -426,6 +427,102 @@ TEST_P(EveryLessonCli, DefaultHeadlessRunSucceedsWithAReport) {
   EXPECT_EQ(json["lesson"], lesson);
   EXPECT_EQ(json["gl_errors"], 0);
   fs::remove_all(dir);
+}
+
+// ---------------------------------------------------------------- documented limits
+
+// One parameter's line of --list-params: its kind and, for numbers, the range it states.
+struct Listed {
+  std::string name, kind;
+  double min = 0, max = 0;
+  bool ranged = false;
+};
+
+std::vector<Listed> listedParams(const std::string& lesson) {
+  std::vector<Listed> params;
+  std::stringstream lines(run(lesson, "--list-params").output);
+  for (std::string line; std::getline(lines, line);) {
+    Listed p;
+    std::stringstream words(line);
+    words >> p.name >> p.kind;
+    const auto open = line.rfind(" in [");
+    if (open != std::string::npos) {
+      const auto comma = line.find(", ", open), close = line.find(']', open);
+      p.min = std::stod(line.substr(open + 5, comma - open - 5));
+      p.max = std::stod(line.substr(comma + 2, close - comma - 2));
+      p.ranged = true;
+    }
+    params.push_back(p);
+  }
+  return params;
+}
+
+std::string number(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+std::string assignment(const Listed& p, double v) {
+  const std::string x = number(v);
+  return p.kind == "vec3" ? p.name + "=" + x + "," + x + "," + x : p.name + "=" + x;
+}
+
+// Both ends of every range --list-params states are accepted, together; one step beyond
+// either end is exit 2. Read from the binaries, so a new parameter is covered by itself.
+// --list-params after the --set list applies and checks them without rendering.
+TEST(DocumentedLimits, EveryRangeEndIsAcceptedAndOneStepBeyondRefused) {
+  std::set<std::string> tried;  // a shared parameter once, not once per lesson
+  for (const std::string& lesson : allLessons()) {
+    std::string at_min, at_max;
+    std::vector<std::string> beyond;
+    for (const Listed& p : listedParams(lesson)) {
+      if (!p.ranged || (p.kind != "int" && p.kind != "float" && p.kind != "vec3")) continue;
+      at_min += " --set " + assignment(p, p.min);
+      at_max += " --set " + assignment(p, p.max);
+      const std::string key = p.name + number(p.min) + number(p.max);
+      if (!tried.insert(key).second) continue;
+      const double step =
+          p.kind == "int" ? 1.0 : 1e-6 * std::max({1.0, std::abs(p.min), std::abs(p.max)});
+      beyond.push_back(assignment(p, p.min - step));
+      beyond.push_back(assignment(p, p.max + step));
+    }
+    for (const std::string& ends : {at_min, at_max}) {
+      const Result r = run(lesson, ends + " --list-params");
+      EXPECT_EQ(r.exit_code, 0) << lesson << ends << "\n" << r.output;
+    }
+    for (const std::string& set : beyond) {
+      const Result r = run(lesson, "--set " + set + " --list-params");
+      EXPECT_EQ(r.exit_code, 2) << lesson << " " << set << "\n" << r.output;
+    }
+  }
+}
+
+// The flags state their ranges in their own message; both ends work, one beyond does not.
+TEST(DocumentedLimits, FlagRangesFromTheirOwnMessages) {
+  const Result size = run(kLesson, "--size 0x0");
+  const auto in = size.output.find(" in "), dots = size.output.find("..", in);
+  ASSERT_NE(dots, std::string::npos) << size.output;
+  const int lo = std::stoi(size.output.substr(in + 4)),
+            hi = std::stoi(size.output.substr(dots + 2));
+  EXPECT_EQ(
+      run(kLesson, "--size " + std::to_string(lo) + "x" + std::to_string(hi) + " --list-params")
+          .exit_code,
+      0);
+  EXPECT_EQ(
+      run(kLesson, "--size " + std::to_string(hi) + "x" + std::to_string(lo) + " --list-params")
+          .exit_code,
+      0);
+  EXPECT_EQ(run(kLesson, "--size " + std::to_string(hi + 1) + "x64 --list-params").exit_code, 2);
+  EXPECT_EQ(run(kLesson, "--size 64x" + std::to_string(lo - 1) + " --list-params").exit_code, 2);
+  const Result frames = run(kLesson, "--frames 0");
+  const auto fin = frames.output.find(" in "), fdots = frames.output.find("..", fin);
+  ASSERT_NE(fdots, std::string::npos) << frames.output;
+  const int flo = std::stoi(frames.output.substr(fin + 4));
+  const int fhi = std::stoi(frames.output.substr(fdots + 2));
+  EXPECT_EQ(run(kLesson, "--frames " + std::to_string(flo) + " --list-params").exit_code, 0);
+  EXPECT_EQ(run(kLesson, "--frames " + std::to_string(fhi) + " --list-params").exit_code, 0);
+  EXPECT_EQ(run(kLesson, "--frames " + std::to_string(fhi + 1) + " --list-params").exit_code, 2);
 }
 
 INSTANTIATE_TEST_SUITE_P(Lessons, EveryLessonCli, ::testing::ValuesIn(allLessons()),

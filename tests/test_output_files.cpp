@@ -115,6 +115,25 @@ TEST_F(OutputFiles, PlacesThatTakeNoFilesAreRefusedUpFront) {
   EXPECT_EQ(resolveOutput((dir / "sub" / "..").string(), t), "it is a directory");
 }
 
+TEST_F(OutputFiles, AFailedBatchLeavesNoTemporaryAndChangesNothing) {
+  std::ofstream(dir / "kept.png") << "before";
+  // A failure in every phase: writing a device (after the temporaries were made), and a
+  // file whose directory went away before the commit.
+  for (const std::string& failing : {std::string("/dev/full"), (dir / "gone" / "x.png").string()}) {
+    OutputBatch batch;
+    batch.add((dir / "kept.png").string(), "after");
+    batch.add((dir / "new.json").string(), "{}");
+    batch.add(failing, "bytes");
+    EXPECT_FALSE(batch.commit()) << failing;
+    EXPECT_NE(batch.failure().find("cannot write " + failing), std::string::npos)
+        << batch.failure();
+    EXPECT_EQ(read(dir / "kept.png"), "before") << failing;
+    EXPECT_FALSE(fs::exists(dir / "new.json")) << failing;
+    // Only what was there: kept.png and sub/.
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 2) << failing;
+  }
+}
+
 TEST_F(OutputFiles, ALinkLoopIsRefused) {
   fs::create_symlink("loop2.png", dir / "loop1.png");
   fs::create_symlink("loop1.png", dir / "loop2.png");

@@ -1,0 +1,100 @@
+// Report fields against an independent computation on cases where the answer is known:
+// medians of the very frames timed, the overhead's direction, counters of one frame (never
+// accumulated), the size a run was given, and pixel counts that nest.
+#include <algorithm>
+
+#include "harness.hpp"
+#include "measure.hpp"
+
+namespace shadows {
+namespace {
+
+using testing::report;
+using testing::startLesson;
+
+// The middle value, or the mean of the two middle values, of a sorted copy.
+double sortedMedian(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+TEST(ReportFields, TimesAreMediansOfTheFramesTimedAndTheOverheadIsFrameOverBaseline) {
+  for (const int frames : {3, 4}) {  // an odd and an even count
+    auto runner = startLesson("03_shadow_map_basic", {"shadow.cache=false"}, 96, 72);
+    std::vector<double> frame_ms, baseline_ms;
+    for (int i = 0; i < frames; ++i) {
+      // The first baseline frame compiles its variants and is not timed (CONTRACTS.md).
+      const size_t timed = runner->baselineMeasure().timedFrames();
+      runner->renderBaselineFrame();
+      if (runner->baselineMeasure().timedFrames() > timed) {
+        baseline_ms.push_back(runner->baselineMeasure().lastFrameMs());
+      }
+      runner->renderFrame();
+      frame_ms.push_back(runner->measure().lastFrameMs());
+    }
+    ASSERT_GE(baseline_ms.size(), 2u);
+    const auto json = report(*runner);
+    const double frame = json["frame_ms"], baseline = json["baseline_frame_ms"];
+    // The report prints 6 significant digits.
+    EXPECT_NEAR(frame, sortedMedian(frame_ms), 1e-5 * frame) << frames;
+    EXPECT_NEAR(baseline, sortedMedian(baseline_ms), 1e-5 * baseline) << frames;
+    // Above 1 means the shadow costs: frame over baseline, not the other way round.
+    EXPECT_NEAR(json["shadow_overhead"].get<double>(), frame / baseline, 1e-5 * frame / baseline);
+  }
+}
+
+TEST(Median, OddEvenOneAndNone) {
+  EXPECT_EQ(median({}), 0.0);
+  EXPECT_EQ(median({7.0}), 7.0);
+  EXPECT_EQ(median({9.0, 1.0, 5.0}), 5.0);
+  EXPECT_EQ(median({4.0, 1.0, 3.0, 2.0}), 2.5);
+  EXPECT_EQ(median({1.0, 100.0}), 50.5);
+  EXPECT_EQ(median({2.0, 2.0, 2.0, 9.0}), 2.0);
+  EXPECT_EQ(median({5.0, 3.0, 1.0, 4.0, 2.0, 6.0}), 3.5);
+}
+
+TEST(ReportFields, CountersAreOneFramesNotASum) {
+  // The map re-rendered every frame: every frame does the same work, so the report's
+  // counters after the fifth frame equal those after the first.
+  auto runner = startLesson("03_shadow_map_basic", {"shadow.cache=false"}, 96, 72);
+  runner->renderFrame();
+  const auto first = report(*runner)["counters"];
+  for (int i = 0; i < 4; ++i) runner->renderFrame();
+  const auto fifth = report(*runner)["counters"];
+  EXPECT_EQ(first, fifth);
+  EXPECT_EQ(fifth["shadow_map_renders"], 1);
+  EXPECT_GT(fifth["shadow"]["draw_calls"].get<long long>(), 0);
+  EXPECT_GT(fifth["eye"]["fragment_invocations"].get<long long>(), 0);
+  // Cached: the first frame renders the map, the next ones do not.
+  auto cached = startLesson("03_shadow_map_basic", {"shadow.cache=true"}, 96, 72);
+  cached->renderFrame();
+  EXPECT_EQ(report(*cached)["counters"]["shadow_map_renders"], 1);
+  cached->renderFrame();
+  EXPECT_EQ(report(*cached)["counters"]["shadow_map_renders"], 0);
+  EXPECT_FALSE(report(*cached)["counters"].contains("shadow")) << "a pass that did not run";
+}
+
+TEST(ReportFields, SizeAndPixelCountsNest) {
+  auto runner = startLesson("05_pcf_dithered", {}, 120, 90);
+  runner->renderFrame();
+  runner->measureError();
+  const auto json = report(*runner);
+  EXPECT_EQ(json["size"], nlohmann::ordered_json::array({120, 90}));
+  EXPECT_EQ(json["lesson"], "05_pcf_dithered");
+  const auto& e = json["error"];
+  const long long covered = e["covered_pixels"], counted = e["counted_pixels"];
+  EXPECT_GT(counted, 0);
+  EXPECT_LE(counted, covered) << "counted pixels are covered pixels that face the light";
+  EXPECT_LE(covered, 120 * 90);
+  // Shaded once each: what passed the eye's depth test is at least every covered pixel.
+  EXPECT_GE(json["counters"]["eye"]["fragments_passed"].get<long long>(), covered);
+  for (const char* pct : {"false_shadow_pct", "false_lit_pct"}) {
+    EXPECT_GE(e[pct].get<double>(), 0.0) << pct;
+    EXPECT_LE(e[pct].get<double>(), 100.0) << pct;
+  }
+  EXPECT_EQ(json["gl_errors"], 0);
+}
+
+}  // namespace
+}  // namespace shadows
