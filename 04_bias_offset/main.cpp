@@ -91,6 +91,7 @@ class BiasOffset final : public Lesson {
         state.offset_factor = mode == Bias::PolygonOffset ? factor : 0.0f;
         state.offset_units = units;
       }
+      if (mode != Bias::ClipTranslate) last_clip_offset_ = last_clip_near_ = last_clip_far_ = 0;
       depth_program_.set("uClipOffset", mode == Bias::ClipTranslate ? clipOffset(units) : 0.0f);
       map_.renderCasters(f, depth_program_, state);
     }

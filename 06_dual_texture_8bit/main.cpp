@@ -70,6 +70,7 @@ class DualTexture8bit final : public Lesson {
   }
 
   void report(JsonWriter& json) const override {
+    map_.report(json);
     json.value("light_near_used", map_.light().frustum().near);
     json.value("light_far_used", map_.light().frustum().far);
     json.value("step_world_at_far", stepAtFar());

@@ -74,6 +74,7 @@ class MultiDigit16bit final : public Lesson {
   }
 
   void report(JsonWriter& json) const override {
+    map_.report(json);
     json.value("light_near_used", map_.light().frustum().near);
     json.value("light_far_used", map_.light().frustum().far);
   }

@@ -1,5 +1,7 @@
 #include "depth_readback.hpp"
 
+#include "json.hpp"
+
 #include <bit>
 
 #include "depth_digits.hpp"
@@ -147,6 +149,8 @@ void DepthReadback::recreate(glm::ivec2 size) {
   offset_unit_ = driverOffsetUnit(depth_bits_, probe_program_);
   const glm::vec4 nothing_in_front(1.0f);  // outside the map: the cleared value, lit
   light_depth_ = Texture::depth(size.x, size.y, depth_bits_);
+  light_depth_.bind(0);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE, &allocated_depth_bits_);
   light_target_ = std::make_unique<Framebuffer>();
   if (linear_) {
     light_color_ = Texture::color(size.x, size.y, GL_R8);
@@ -318,6 +322,11 @@ void DepthReadback::drawInset(const Frame& frame, bool fullscreen) const {
   } else {
     frame.drawImageInset(map, fullscreen);
   }
+}
+
+void DepthReadback::report(JsonWriter& json) const {
+  json.value("light_depth_bits", allocated_depth_bits_);
+  json.value("light_offset_unit", offset_unit_);
 }
 
 }  // namespace shadows

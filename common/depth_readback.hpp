@@ -17,6 +17,8 @@
 
 namespace shadows {
 
+class JsonWriter;
+
 class DepthReadback {
  public:
   // The light view's shadow.* parameters plus map.path, map.depth_bits, bias.mode,
@@ -57,6 +59,10 @@ class DepthReadback {
   bool readbackRoundsToNearest() const { return nearest_; }
   // One glPolygonOffset unit in window depth on this driver and depth buffer (measured).
   float offsetUnit() const { return offset_unit_; }
+  // The report fields of the light pass's depth buffer, as the driver gives them:
+  // `light_depth_bits` (GL_TEXTURE_DEPTH_SIZE of what map.depth_bits allocated) and
+  // `light_offset_unit` (offsetUnit()).
+  void report(JsonWriter& json) const;
   long long bytesPerFrame() const {
     return static_cast<long long>(light_.size().x) * light_.size().y * digits_;
   }
@@ -84,6 +90,7 @@ class DepthReadback {
   std::vector<std::uint16_t> shorts_;
   glm::ivec2 size_{0};
   int depth_bits_ = 24;
+  int allocated_depth_bits_ = 0;  // asked of the driver after allocating
   std::string path_, storage_key_;
   bool linear_ = false, inset_ = true;
   ChoiceParam<> encoding_, path_param_, depth_bits_param_, bias_mode_;

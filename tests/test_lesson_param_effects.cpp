@@ -1,0 +1,166 @@
+// Every parameter of every lesson does something: moved away from its default it changes
+// the picture, a counter or a derived report field, and moved back it gives the very same
+// frame again (a toggle that forgets to re-render, a cache key that misses an input, fail).
+// Read from the lessons' own declarations, so a new parameter is covered by itself. Where a
+// parameter acts only in some setting (near/far with the fit off), the setting is named here.
+#include <map>
+#include <set>
+
+#include "harness.hpp"
+
+namespace shadows {
+namespace {
+
+using testing::startLesson;
+
+// What a frame shows and reports, less its timings and the compile count that only grows.
+struct Signature {
+  std::vector<std::uint8_t> pixels;
+  std::string report;
+  bool operator==(const Signature&) const = default;
+};
+
+Signature signature(Runner& runner) {
+  runner.renderFrame();
+  runner.renderFrame();  // the second frame: a cached map shows in its counters
+  nlohmann::ordered_json json = testing::report(runner);
+  for (const char* timing :
+       {"frame_ms", "pass_ms", "baseline_frame_ms", "shadow_overhead", "shader_variants_compiled",
+        "params", "error"}) {  // the error block: there once the truth was traced
+    json.erase(timing);
+  }
+  return {runner.readImage().rgba, json.dump()};
+}
+
+std::string format(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+// Values other than the default, as --set text: each other choice, the other bool, and a
+// number (or each component) moved well inside its range.
+std::vector<std::string> otherValues(const Param& p) {
+  std::vector<std::string> values;
+  const double v = p.value[0];
+  const double moved = v - p.min > p.max - v ? p.min + 0.1 * (v - p.min) : v + 0.1 * (p.max - v);
+  switch (p.kind) {
+    case ParamKind::Choice:
+      for (const std::string& c : p.choices) {
+        if (c != p.choice()) values.push_back(c);
+      }
+      break;
+    case ParamKind::Bool:
+      values.push_back(v != 0.0 ? "false" : "true");
+      break;
+    case ParamKind::Int:
+      values.push_back(format(std::round(moved)));
+      break;
+    case ParamKind::Float:
+      values.push_back(format(moved));
+      break;
+    case ParamKind::Vec3:
+      values.push_back(format(p.value[0] + 1.0) + "," + format(p.value[1]) + "," +
+                       format(p.value[2]));
+      values.push_back(format(p.value[0]) + "," + format(p.value[1] + 1.0) + "," +
+                       format(p.value[2]));
+      break;
+    case ParamKind::String:
+      break;  // image paths: the lessons' own tests load PNGs
+  }
+  return values;
+}
+
+std::string currentText(const Param& p) {
+  switch (p.kind) {
+    case ParamKind::Choice:
+      return p.choice();
+    case ParamKind::Bool:
+      return p.value[0] != 0.0 ? "true" : "false";
+    case ParamKind::Vec3:
+      return format(p.value[0]) + "," + format(p.value[1]) + "," + format(p.value[2]);
+    case ParamKind::String:
+      return p.string_value;
+    default:
+      return format(p.value[0]);
+  }
+}
+
+// The settings in which a parameter acts, where the defaults are not one of them (each is
+// what the parameter's help or its lesson's README says).
+const std::vector<std::string> kNearLight = {"shadow.fit=false", "light.near=0.001"};
+const std::vector<std::string> kLowProjector = {
+    "light.pos=-1.2,0.5,1.8", "light.target=1.6,1.4,-1.2", "light.fov=80", "falloff=0"};
+std::vector<std::string> with(std::vector<std::string> sets, const std::vector<std::string>& more) {
+  sets.insert(sets.end(), more.begin(), more.end());
+  return sets;
+}
+const std::map<std::string, std::vector<std::string>> kActsWhen = {
+    // The frustum: near and far when it is not fitted to the casters, a box for directional.
+    {"light.near", {"shadow.fit=false"}},
+    {"light.far", {"shadow.fit=false"}},
+    {"light.extent", {"light.type=directional"}},
+    // 01: a point light has no target; each fix where its artifact shows.
+    {"light.target", {"light.type=directional"}},
+    {"fix.offset", {"fix.receiver=false"}},
+    {"fix.clip", {"plane.offset=1"}},
+    {"fix.homogeneous", {"light.pos=2.5,1.1,2.5"}},
+    // 02: reverse projection with the other fixes off; a projector with the sphere behind it.
+    {"fix.q_test", with(kLowProjector, {"fix.behind=off"})},
+    {"fix.behind", {"light.pos=0.6,0.6,0.9", "light.target=0,0.6,-3"}},  // the sphere behind
+    // Depth precision shows with a near plane close to the light.
+    {"shadow.format", kNearLight},
+    {"map.depth_bits", kNearLight},
+    // 04's clamp is the gradient bias's; 05's taps are the grid's and Poisson's.
+    {"bias.clamp", {"bias.mode=gradient"}},
+    {"pcf.taps", {"pcf.mode=poisson"}},
+    // How the copy is made shows in its counters, on frames that render the map.
+    {"map.path", {"shadow.cache=false"}},
+};
+
+class ParamEffects : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ParamEffects, EveryParameterChangesSomethingAndComesBack) {
+  const std::string lesson = GetParam();
+  auto probe = startLesson(lesson, {}, 8, 8);
+  std::vector<std::string> names;
+  for (const Param& p : probe->params().all()) names.push_back(p.name);
+  probe.reset();
+  // One runner (one GL context) at a time: the default settings first, then each setting
+  // some parameter needs.
+  std::map<std::vector<std::string>, std::vector<std::string>> by_context;
+  for (const std::string& name : names) {
+    const auto it = kActsWhen.find(name);
+    by_context[it != kActsWhen.end() ? it->second : std::vector<std::string>{}].push_back(name);
+  }
+  for (const auto& [context, group] : by_context) {
+    auto runner = startLesson(lesson, context, 80, 60);
+    for (const std::string& name : group) {
+      Param& p = runner->params().at(name);
+      const std::string original = currentText(p);
+      const Signature before = signature(*runner);
+      for (const std::string& value : otherValues(p)) {
+        ASSERT_EQ(runner->params().set(name, value), "") << name << "=" << value;
+        const Signature changed = signature(*runner);
+        EXPECT_FALSE(changed == before) << lesson << ": " << name << "=" << value
+                                        << " changed nothing (from " << original << ")";
+        ASSERT_EQ(runner->params().set(name, original), "") << name;
+        const Signature back = signature(*runner);
+        EXPECT_EQ(back.report, before.report)
+            << lesson << ": " << name << " back to " << original << " after " << value;
+        EXPECT_TRUE(back.pixels == before.pixels)
+            << lesson << ": " << name << " back to " << original << " after " << value
+            << " is not the picture it was";
+      }
+      EXPECT_EQ(runner->glErrors(), 0) << lesson << " " << name;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Lessons, ParamEffects, ::testing::ValuesIn(registeredLessons()),
+                         [](const ::testing::TestParamInfo<std::string>& lesson) {
+                           return lesson.param;
+                         });
+
+}  // namespace
+}  // namespace shadows
