@@ -62,19 +62,11 @@ class DualTexture8bit final : public Lesson {
   }
 
   void panel(Frame&) override {
-    const LightFrustum& fr = map_.light().frustum();
-    ImGui::Text("light near %.3f  far %.3f  (far/near %.0f)%s", fr.near, fr.far, fr.far / fr.near,
-                map_.light().fitted() ? " fitted" : "");
-    ImGui::TextDisabled("one 8-bit step = %.4g world units at the far plane", stepAtFar());
+    map_.precisionPanel();
     ImGui::Text("pass 2 lit %lld fragments", lit_fragments_);
   }
 
-  void report(JsonWriter& json) const override {
-    map_.report(json);
-    json.value("light_near_used", map_.light().frustum().near);
-    json.value("light_far_used", map_.light().frustum().far);
-    json.value("step_world_at_far", stepAtFar());
-  }
+  void report(JsonWriter& json) const override { map_.report(json); }
 
  private:
   // dual_texture.frag compiled as PASS 1 or 2 (0: the one-value views) for this view,
@@ -106,13 +98,6 @@ class DualTexture8bit final : public Lesson {
 
   // How far apart, along the light's axis, two depths at the far plane must be to differ in
   // 8 bits: projective depth crowds its steps near the far plane, linear spreads them evenly.
-  float stepAtFar() const {
-    const LightFrustum& fr = map_.light().frustum();
-    const float range = fr.far - fr.near;
-    if (map_.linear() || fr.directional) return range / 255.0f;
-    return fr.far * fr.far * range / (fr.far * fr.near * 255.0f);
-  }
-
   DepthReadback map_{1};
   ProgramVariants variants_;
   SamplesPassedQuery query_;

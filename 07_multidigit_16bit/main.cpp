@@ -67,17 +67,11 @@ class MultiDigit16bit final : public Lesson {
   }
 
   void panel(Frame&) override {
-    const LightFrustum& fr = map_.light().frustum();
-    ImGui::Text("light near %.3f  far %.3f  (far/near %.0f)%s", fr.near, fr.far, fr.far / fr.near,
-                map_.light().fitted() ? " fitted" : "");
+    map_.precisionPanel();
     ImGui::Text("lit by pass 2 %lld, by pass 3 %lld fragments", lit_[0], lit_[1]);
   }
 
-  void report(JsonWriter& json) const override {
-    map_.report(json);
-    json.value("light_near_used", map_.light().frustum().near);
-    json.value("light_far_used", map_.light().frustum().far);
-  }
+  void report(JsonWriter& json) const override { map_.report(json); }
 
  private:
   void drawPasses(Frame& f, bool additive) {

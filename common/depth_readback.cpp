@@ -2,6 +2,8 @@
 
 #include "json.hpp"
 
+#include <imgui.h>
+
 #include <bit>
 
 #include "depth_digits.hpp"
@@ -324,9 +326,28 @@ void DepthReadback::drawInset(const Frame& frame, bool fullscreen) const {
   }
 }
 
+float DepthReadback::stepWorldAt(float distance) const {
+  return depthStepWorld(light_.frustum(), distance, digits_ == 1 ? 255.0 : 65535.0, linear_);
+}
+
 void DepthReadback::report(JsonWriter& json) const {
+  json.value("light_near_used", light_.frustum().near);
+  json.value("light_far_used", light_.frustum().far);
   json.value("light_depth_bits", allocated_depth_bits_);
   json.value("light_offset_unit", offset_unit_);
+  json.value("step_world_at_nearest_caster", stepWorldAt(light_.casterDistances().x));
+  json.value("step_world_at_farthest_caster", stepWorldAt(light_.casterDistances().y));
+}
+
+void DepthReadback::precisionPanel() const {
+  const LightFrustum& fr = light_.frustum();
+  ImGui::Text("near %.3g  far %.4g in use", fr.near, fr.far);
+  if (light_.fitted()) {
+    ImGui::TextDisabled("(fitted to the casters: light.near/far act with shadow.fit off)");
+  }
+  const glm::vec2 casters = light_.casterDistances();
+  ImGui::Text("one %d-bit step: %.3g at the nearest caster,", 8 * digits_, stepWorldAt(casters.x));
+  ImGui::Text("  %.3g at the farthest (world units)", stepWorldAt(casters.y));
 }
 
 }  // namespace shadows

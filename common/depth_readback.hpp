@@ -59,10 +59,17 @@ class DepthReadback {
   bool readbackRoundsToNearest() const { return nearest_; }
   // One glPolygonOffset unit in window depth on this driver and depth buffer (measured).
   float offsetUnit() const { return offset_unit_; }
-  // The report fields of the light pass's depth buffer, as the driver gives them:
-  // `light_depth_bits` (GL_TEXTURE_DEPTH_SIZE of what map.depth_bits allocated) and
-  // `light_offset_unit` (offsetUnit()).
+  // The report fields of the map: `light_near_used`, `light_far_used`, the light pass's depth
+  // buffer as the driver gives it (`light_depth_bits`, GL_TEXTURE_DEPTH_SIZE of what
+  // map.depth_bits allocated; `light_offset_unit`, offsetUnit()), and the world size of one
+  // step of the map at the nearest and the farthest caster (`step_world_at_nearest_caster`,
+  // `step_world_at_farthest_caster`): where precision is spent, near decides.
   void report(JsonWriter& json) const;
+  // The panel's lines on the same: the near and far in use (and whether the sliders act),
+  // and the step at the casters.
+  void precisionPanel() const;
+  // One step of this map (8 or 16 bits, projective or linear) at `distance` from the light.
+  float stepWorldAt(float distance) const;
   long long bytesPerFrame() const {
     return static_cast<long long>(light_.size().x) * light_.size().y * digits_;
   }

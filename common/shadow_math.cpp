@@ -43,10 +43,9 @@ glm::mat4 planarShadowMatrix(glm::vec4 plane, glm::vec4 light) {
   return glm::dot(plane, light) * glm::mat4(1.0f) - glm::outerProduct(light, plane);
 }
 
-bool fitNearFar(const glm::mat4& lightView, const Bounds& bounds, bool directional, float& near,
-                float& far) {
+bool depthRange(const glm::mat4& lightView, const Bounds& bounds, float& closest, float& farthest) {
   if (bounds.empty()) return false;
-  float closest = 1e30f, farthest = -1e30f;
+  closest = 1e30f, farthest = -1e30f;
   for (int corner = 0; corner < 8; ++corner) {
     const glm::vec3 p{(corner & 1) ? bounds.max.x : bounds.min.x,
                       (corner & 2) ? bounds.max.y : bounds.min.y,
@@ -55,6 +54,23 @@ bool fitNearFar(const glm::mat4& lightView, const Bounds& bounds, bool direction
     closest = std::min(closest, depth);
     farthest = std::max(farthest, depth);
   }
+  return true;
+}
+
+float depthStepWorld(const LightFrustum& frustum, float distance, double levels, bool linear) {
+  const double n = frustum.near, f = frustum.far, range = f - n;
+  if (linear || frustum.directional || !(n > 0.0) || !(range > 0.0)) {
+    return static_cast<float>(range / levels);
+  }
+  // Window depth d(z) = f (z - n) / (z (f - n)), so dz/dd = z^2 (f - n) / (f n).
+  const double z = distance;
+  return static_cast<float>(z * z * range / (f * n * levels));
+}
+
+bool fitNearFar(const glm::mat4& lightView, const Bounds& bounds, bool directional, float& near,
+                float& far) {
+  float closest = 0.0f, farthest = 0.0f;
+  if (!depthRange(lightView, bounds, closest, farthest)) return false;
   const float margin = 0.01f * std::max(farthest - closest, 1e-3f);
   float fitted_near = closest - margin;
   const float fitted_far = farthest + margin;

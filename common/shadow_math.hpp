@@ -37,6 +37,16 @@ glm::mat4 shadowTextureMatrix(const glm::mat4& lightProjection, const glm::mat4&
 // get w < 0, which the GPU's clipper removes (they cannot cast onto the plane).
 glm::mat4 planarShadowMatrix(glm::vec4 plane, glm::vec4 light);
 
+// The nearest and farthest distance along the light's view axis of the corners of `bounds`
+// (false when they are empty).
+bool depthRange(const glm::mat4& lightView, const Bounds& bounds, float& closest, float& farthest);
+
+// The world size, along the light's axis, of one step of a map holding `levels` + 1 depth
+// values, at `distance` from the light: z^2 (f - n) / (f n levels) for a spot's projective
+// (window) depth, where near decides and far barely matters once f >> n; (f - n) / levels
+// for an orthographic light or a linear depth (06's map.encoding=linear).
+float depthStepWorld(const LightFrustum& frustum, float distance, double levels, bool linear);
+
 // Near/far along the light's view axis that just enclose `bounds` (e.g. the casters),
 // with a small margin. For a spot light, near stays positive. Returns false (and leaves
 // near/far alone) when the bounds are empty or lie entirely behind the light.
