@@ -2,8 +2,9 @@
 """Markdown tables for the lesson READMEs from bench_sweep's CSV files, so every number the
 READMEs quote comes from a command anyone can re-run:
 
-  build/bench/bench_sweep --lesson precision_study   # and 06_dual_texture_8bit, 07_multidigit_16bit
-  bench/tables.py precision bench/results/precision_study.csv
+  build/bench/bench_sweep --lesson precision_near    # and precision_far, 06, 07
+  bench/tables.py precision bench/results/precision_near.csv
+  bench/tables.py precision bench/results/precision_far.csv
   bench/tables.py copy bench/results/06_dual_texture_8bit.csv bench/results/07_multidigit_16bit.csv
   bench/tables.py cost bench/results/shadow_cost.csv
   bench/tables.py pcf bench/results/pcf_cost.csv
@@ -33,22 +34,26 @@ def ordered(values):
 
 def precision(path):
     data = rows(path)
-    ratios = ordered(r["far_over_near"] for r in data)
+    # The study's own axis: the third column (light_near, light_far, ...).
+    with open(path, newline="") as f:
+        axis = next(csv.reader(f))[2]
+    held = {"light_near": "far 100", "light_far": "near 1"}.get(axis, "")
+    values = ordered(r[axis] for r in data)
     maps = ordered(r["map"] for r in data)
     for scene in ordered(r["scene"] for r in data):
-        print(f"\n{scene}: false shadow % / false lit % (1024² map; far/near across)\n")
-        print("| map | " + " | ".join(ratios) + " |")
-        print("|---|" + "---|" * len(ratios))
+        print(f"\n{scene}: false shadow % / false lit % (1024² map, 640x480; {axis} across, "
+              f"{held} held)\n")
+        print(f"| map | " + " | ".join(values) + " |")
+        print("|---|" + "---|" * len(values))
         for m in maps:
             cells = []
-            for ratio in ratios:
-                hit = [r for r in data if r["scene"] == scene and r["map"] == m
-                       and r["far_over_near"] == ratio]
+            for v in values:
+                hit = [r for r in data if r["scene"] == scene and r["map"] == m and r[axis] == v]
                 cells.append("—" if not hit else
                              f"{num(hit[0], 'false_shadow_pct'):.2f} / {num(hit[0], 'false_lit_pct'):.2f}")
             print(f"| {m} | " + " | ".join(cells) + " |")
     # What a frame costs, per map, over every point (the map is re-rendered each frame).
-    print("\nframe cost in ms, medians over both scenes and every far/near (map re-rendered "
+    print(f"\nframe cost in ms, medians over both scenes and every {axis} (map re-rendered "
           "each frame)\n")
     print("| map | frame | cpu | shadow pass | readback | eye (03-05) | pass 1 | pass 2 | pass 3 "
           "| frame / 8bit_projective |")
