@@ -68,7 +68,7 @@ class MultiDigit16bit final : public Lesson {
 
   void panel(Frame&) override {
     map_.precisionPanel();
-    ImGui::Text("lit by pass 2 %lld, by pass 3 %lld fragments", lit_[0], lit_[1]);
+    ImGui::TextWrapped("lit by pass 2 %lld, by pass 3 %lld fragments", lit_[0], lit_[1]);
   }
 
   void report(JsonWriter& json) const override { map_.report(json); }

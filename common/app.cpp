@@ -89,12 +89,25 @@ void Runner::declareSharedInto(Params& params) {
                    "spot: perspective frustum; directional: orthographic", kLight);
   params.addVec3("light.pos", {3, 6, 4}, -50, 50, "light position", kLight);
   params.addVec3("light.target", {0, 0, 0}, -50, 50, "where the light points", kLight);
-  params.addFloat("light.fov", 60, 5, 160, "spot light field of view, degrees", kLight);
-  params.addFloat("light.extent", 10, 0.5f, 50, "directional: half width of the light box", kLight);
+  params.addFloat("light.fov", 60, 5, 160, "spot light field of view, degrees", kLight).inactive =
+      [](const Params& ps) {
+        return ps.at("light.type").is("directional") ? "a directional light has no angle" : "";
+      };
+  params.addFloat("light.extent", 10, 0.5f, 50, "directional: half width of the light box", kLight)
+      .inactive = [](const Params& ps) {
+    return ps.at("light.type").is("spot") ? "a spot light has no box" : "";
+  };
+  // Near and far are the casters' own while shadow.fit is on (lessons with a shadow map).
+  const auto fitted = [](const Params& ps) -> std::string {
+    const Param* fit = ps.find("shadow.fit");
+    return fit != nullptr && fit->b() ? "shadow.fit is on: near and far fit the casters" : "";
+  };
   params.addFloat("light.near", 1, 0.001f, 100, "light frustum near plane", kLight).logarithmic =
       true;
+  params.at("light.near").inactive = fitted;
   params.addFloat("light.far", 20, 0.01f, 1000, "light frustum far plane", kLight).logarithmic =
       true;
+  params.at("light.far").inactive = fitted;
   params.addVec3("camera.pos", {0, 4, 8}, -100, 100, "eye position (drag in the window)");
   params.addVec3("camera.target", {0, 0, 0}, -100, 100, "what the eye looks at");
   params.addFloat("camera.fov", 45, 10, 120, "eye vertical field of view, degrees");

@@ -343,11 +343,15 @@ void DepthReadback::precisionPanel() const {
   const LightFrustum& fr = light_.frustum();
   ImGui::Text("near %.3g  far %.4g in use", fr.near, fr.far);
   if (light_.fitted()) {
-    ImGui::TextDisabled("(fitted to the casters: light.near/far act with shadow.fit off)");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("fitted to the casters: light.near and light.far act with shadow.fit off");
+    ImGui::PopStyleColor();
   }
   const glm::vec2 casters = light_.casterDistances();
-  ImGui::Text("one %d-bit step: %.3g at the nearest caster,", 8 * digits_, stepWorldAt(casters.x));
-  ImGui::Text("  %.3g at the farthest (world units)", stepWorldAt(casters.y));
+  ImGui::TextWrapped(
+      "one %d-bit step: %.3g world units at the nearest caster, %.3g at the "
+      "farthest",
+      8 * digits_, stepWorldAt(casters.x), stepWorldAt(casters.y));
 }
 
 }  // namespace shadows

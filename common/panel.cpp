@@ -132,6 +132,18 @@ void Runner::drawPanel(Frame& frame) {
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   ImGui::TextWrapped("%s", lesson_->seeds().c_str());
   ImGui::PopStyleColor();
+  // The two answers every lesson gives, where no scrolling hides them: how wrong, what it costs.
+  if (options_.truth) {
+    if (error_.valid) {
+      ImGui::TextWrapped("error: false shadow %.2f%%, false lit %.2f%%",
+                         error_.metrics.false_shadow_pct, error_.metrics.false_lit_pct);
+    } else {
+      ImGui::TextDisabled("error: measuring...");
+    }
+  }
+  if (const double overhead = shadowOverhead(); overhead > 0.0) {
+    ImGui::Text("cost: %.2fx the frame without shadow", overhead);
+  }
   params_.drawWidgets([](const Param& p) { return p.name == "view" || p.name == "scene"; });
   if (ImGui::Button("Screenshot (F12)")) screenshot_requested_ = true;
 
@@ -149,7 +161,7 @@ void Runner::drawPanel(Frame& frame) {
     });
   }
   if (ImGui::CollapsingHeader("Cost", ImGuiTreeNodeFlags_DefaultOpen)) {
-    ImGui::TextUnformatted(costSummary().c_str());
+    ImGui::TextWrapped("%s", costSummary().c_str());
     // One line per pass ever run, so widgets never jump around.
     const auto& work = measure_->lastFrameWork();
     for (const auto& [pass, ms] : measure_->medianPassMs()) {

@@ -26,6 +26,8 @@ enum DirtyBits : std::uint32_t {
   kDirtyAll = 0xffffffffu,
 };
 
+class Params;
+
 enum class ParamKind { Float, Int, Bool, Vec3, Choice, String };
 
 struct Param {
@@ -42,6 +44,9 @@ struct Param {
   // Optional extra check of a value that already parsed (say, a file that must load):
   // returns "" or what is wrong, and set() then refuses the value with that message.
   std::function<std::string(const std::string&)> check;
+  // Optional: "" while the parameter acts, else why it does nothing in the current settings
+  // (light.near while shadow.fit is on). The panel greys the widget out and says why.
+  std::function<std::string(const Params&)> inactive;
   // Where the panel drew its widget last frame (ImGui screen coordinates, y down), so a test
   // or a tutorial script can aim the mouse at it.
   glm::vec2 widget_min{0.0f}, widget_max{0.0f};

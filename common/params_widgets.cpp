@@ -15,6 +15,8 @@ bool Params::drawWidgets(const std::function<bool(const Param&)>& which) {
   for (auto& p : params_) {
     if (!which(p)) continue;
     bool changed_now = false;
+    const std::string idle = p.inactive ? p.inactive(*this) : std::string();
+    if (!idle.empty()) ImGui::BeginDisabled();
     const ImGuiSliderFlags flags =
         ImGuiSliderFlags_AlwaysClamp | (p.logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
     switch (p.kind) {
@@ -81,7 +83,10 @@ bool Params::drawWidgets(const std::function<bool(const Param&)>& which) {
     p.widget_min = {ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y};
     // The frame only, not the label drawn to its right.
     p.widget_max = {ImGui::GetItemRectMin().x + ImGui::CalcItemWidth(), ImGui::GetItemRectMax().y};
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", p.help.c_str());
+    if (!idle.empty()) ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+      ImGui::SetTooltip("%s%s%s", p.help.c_str(), idle.empty() ? "" : "\nnow: ", idle.c_str());
+    }
     if (const auto it = refused_.find(p.name); it != refused_.end() && !it->second.empty()) {
       ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", it->second.c_str());
     }

@@ -164,3 +164,30 @@ INSTANTIATE_TEST_SUITE_P(Lessons, ParamEffects, ::testing::ValuesIn(registeredLe
 
 }  // namespace
 }  // namespace shadows
+
+namespace shadows {
+namespace {
+
+// The panel greys out what does nothing in the current settings, and says why (issue 19):
+// the same settings the effects test above needs to see those parameters act.
+TEST(ParamEffects, SlidersThatDoNothingNowSaySo) {
+  auto runner = testing::startLesson("03_shadow_map_basic", {"shadow.fit=true"}, 8, 8);
+  Params& p = runner->params();
+  const auto why = [&](const std::string& name) {
+    const Param& param = p.at(name);
+    return param.inactive ? param.inactive(p) : std::string();
+  };
+  EXPECT_NE(why("light.near"), "");
+  EXPECT_NE(why("light.far"), "");
+  EXPECT_NE(why("light.extent"), "") << "spot by default";
+  EXPECT_EQ(why("light.fov"), "");
+  ASSERT_EQ(p.set("shadow.fit", "false"), "");
+  ASSERT_EQ(p.set("light.type", "directional"), "");
+  EXPECT_EQ(why("light.near"), "");
+  EXPECT_EQ(why("light.far"), "");
+  EXPECT_EQ(why("light.extent"), "");
+  EXPECT_NE(why("light.fov"), "");
+}
+
+}  // namespace
+}  // namespace shadows
