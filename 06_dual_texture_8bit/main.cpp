@@ -50,9 +50,9 @@ class DualTexture8bit final : public Lesson {
       map_.drawInset(f, /*fullscreen=*/true);
       return;
     }
-    // The visibility view clears to 0 (shadowed), so a pass switched off leaves its pixels
-    // shadowed, not the sky's colour (which would read as lit).
-    f.clearTarget(f.mode == "visibility" ? glm::vec3(0.0f) : Frame::kSky);
+    // Black where nothing is drawn: the visibility view (0 is shadowed) and the lit passes
+    // shown alone (pass.dimmed off), whose shadows would otherwise be holes of sky.
+    f.clearTarget(f.mode == "visibility" || !dimmed_() ? glm::vec3(0.0f) : Frame::kSky);
     if (f.mode == "ramp" || f.mode == "difference") {  // one value per pixel, no test
       f.drawObjects(pass(f, 0), Objects::All);
     } else {

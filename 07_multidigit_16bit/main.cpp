@@ -56,9 +56,10 @@ class MultiDigit16bit final : public Lesson {
       drawDigits(f, f.mode == "little_digit" ? 1 : 0, /*inset=*/false);
       return;
     }
-    // Colour, depth, and the stencil to 0; the visibility view to 0 (shadowed), so a pass
-    // switched off leaves its pixels shadowed, not the sky's colour.
-    f.clearTarget(f.mode == "visibility" ? glm::vec3(0.0f) : Frame::kSky);
+    // Colour, depth, and the stencil to 0. Black where nothing is drawn: the visibility view (0 is
+    // shadowed) and the lit passes shown alone (pass.dimmed off), whose shadows would otherwise be
+    // holes of sky.
+    f.clearTarget(f.mode == "visibility" || !dimmed_() ? glm::vec3(0.0f) : Frame::kSky);
     drawPasses(f, f.mode == "passes");
     // The inset: the little digit, "here is where the information is".
     if (f.mode != "visibility" && inset_() && !map_.light().off()) {
