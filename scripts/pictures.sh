@@ -4,7 +4,9 @@
 #   file.png  --set name=value ...       (any lesson flags; '#' starts a comment)
 # and gets NN_name/pictures/file.png plus NN_name/pictures/numbers.md, a table of the
 # error and timing of every picture (the numbers the README quotes). Frame times are of
-# static frames: where a lesson caches its shadow map, they leave the map pass out.
+# static frames: where a lesson caches its shadow map, they leave the map pass out. Lessons
+# that report the size of a map step (06, 07) get it too, in world units at the nearest and
+# farthest caster.
 # Usage: scripts/pictures.sh [lesson-prefix ...]   (default: every lesson)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,6 +24,7 @@ for list in [0-9][0-9]_*/pictures.txt; do
   table="$lesson/pictures/numbers.md"
   rows=()
   air=0  # a lesson with a medium (08) reports the air's error too: two more columns
+  steps=0  # 06 and 07 report one map step at the casters: two more columns
   while read -r file flags; do
     [[ -z $file || $file == \#* ]] && continue
     report=$(mktemp)
@@ -38,12 +41,21 @@ for list in [0-9][0-9]_*/pictures.txt; do
       rel=$(grep -o '"air_rel_rmse": [-0-9.e+]*' "$report" | awk '{printf "%.3g", 100 * $2}')
       row="$row $rel | $(num air_mae) |"
     fi
+    if grep -q '"step_world_at_nearest_caster"' "$report"; then
+      steps=1
+      row="$row $(num step_world_at_nearest_caster) | $(num step_world_at_farthest_caster) |"
+    fi
     rows+=("$row")
     rm -f "$report"
   done <"$list"
   {
+    echo "Pictures at $size unless their settings give a \`--size\`, 3 timed frames, by \`scripts/pictures.sh\`."
+    echo
     if ((air)); then
       echo "| picture | settings | false shadow % | false lit % | vis_mae | frame ms (map cached) | air rel. RMSE % | air_mae |"
+      echo "|---|---|---|---|---|---|---|---|"
+    elif ((steps)); then
+      echo "| picture | settings | false shadow % | false lit % | vis_mae | frame ms (map cached) | step at nearest caster | step at farthest caster |"
       echo "|---|---|---|---|---|---|---|---|"
     else
       echo "| picture | settings | false shadow % | false lit % | vis_mae | frame ms (map cached) |"
