@@ -76,6 +76,8 @@ class Atmospherics final : public Lesson {
 
     const glm::mat4 cone = coneOfLight(f);
     f.medium = AirMedium{density_(), f.light.position, cone, &spot_, 64};
+    f.medium->directional = f.light.directional;  // its shadow rays run parallel
+    f.medium->light_direction = f.light.direction;
 
     // 2 and 3. The surfaces, lit through the spot texture and the shadow map.
     {
@@ -113,7 +115,8 @@ class Atmospherics final : public Lesson {
 
  private:
   // The lit air: the spot's frustum from the light to the farthest point of the scene, so it
-  // is the same whatever the map's near and far (light.near/far, shadow.fit) are set to.
+  // is the same whatever the map's near and far (light.near/far, shadow.fit) are set to. A
+  // directional light's box starts at the light too: what lies behind it gets no light.
   glm::mat4 coneOfLight(const Frame& f) const {
     // The map's aspect, so the map covers the whole lit cone (a non-square map widens it).
     LightFrustum frustum = f.light.frustum(static_cast<float>(map_.width()) /
@@ -121,7 +124,7 @@ class Atmospherics final : public Lesson {
     float near = frustum.near, far = frustum.far;
     if (fitNearFar(f.light.view, f.scene.bounds(), frustum.directional, near, far)) {
       frustum.far = far;
-      frustum.near = frustum.directional ? near : far * 1e-3f;
+      frustum.near = frustum.directional ? 0.0f : far * 1e-3f;
     }
     return lightProjection(frustum) * f.light.view;
   }
