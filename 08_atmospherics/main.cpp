@@ -70,8 +70,12 @@ class Atmospherics final : public Lesson {
 
   void render(Frame& f) override {
     loadSpot(image_(), falloff_());
-    // 1. The shadow map, lesson 04's default bias (back faces + glPolygonOffset(1.1, 4)).
-    if (map_.prepare(f)) map_.renderCasters(f, ShadowMap::backFacesBias(1.1f, 4.0f));
+    // 1. The shadow map, lesson 04's default bias (back faces + glPolygonOffset(1.1, 4)). Every
+    // object goes in, the floor and walls too: they cast nothing on a surface, but they shadow
+    // the air behind them (the dust beneath the floor, seen from below it).
+    if (map_.prepare(f)) {
+      map_.renderCasters(f, ShadowMap::backFacesBias(1.1f, 4.0f), Objects::Occluders);
+    }
     if (map_.drawDepthView(f)) return;
 
     const glm::mat4 cone = coneOfLight(f);
