@@ -143,9 +143,11 @@ AirMetrics compareAir(const std::vector<float>& rendered, const Truth::AirResult
     truth_sum += t;
   }
   m.truth_noise = truth.noise;
+  m.valid = true;
+  // Both dark everywhere (no dust, or no lit air in view): they agree, nothing to compare.
+  if (m.pixels == 0) m.note = "no air light in the picture or the truth";
   if (m.pixels > 0) {
     const double n = static_cast<double>(m.pixels);
-    m.valid = true;
     m.mae = abs_sum / n;
     m.truth_mean = truth_sum / n;
     // No light in the truth but some in the picture: wholly wrong, not 0 % wrong.

@@ -87,7 +87,8 @@ class Truth {
 
 // The air light against its truth, over the pixels where either is non-zero.
 struct AirMetrics {
-  bool valid = false;
+  bool valid = false;        // measured: the lesson has a medium (every field then reported)
+  std::string note;          // why the numbers are 0 when no pixel has air light in either
   double mae = 0.0;          // mean |rendered - truth|
   double rel_rmse = 0.0;     // sqrt(mean (rendered - truth)^2) / sqrt(mean truth^2); 1 when
                              // the truth has no light and the picture has some

@@ -186,5 +186,22 @@ TEST(Lesson08, DustBelowTheFloorIsInItsShadow) {
   }
 }
 
+TEST(Lesson08, NoAirStillReportsTheAirFiguresWithTheReason) {
+  // No dust: picture and truth agree on no air light. The figures are there, 0, and say why.
+  auto runner = startLesson(kLesson, {"air.density=0"});
+  runner->renderFrame();
+  const ErrorMetrics& e = runner->measureError().metrics;
+  EXPECT_TRUE(e.air.valid);
+  EXPECT_EQ(e.air.pixels, 0);
+  for (const char* key : {"air_mae", "air_rel_rmse", "air_truth_mean", "air_pixels"}) {
+    EXPECT_EQ(testing::reportNumber(*runner, key), 0.0) << key;
+  }
+  EXPECT_EQ(testing::reportString(*runner, "air_note"), "no air light in the picture or the truth");
+  // With air, no note.
+  auto lit = startLesson(kLesson, {});
+  lit->renderFrame();
+  EXPECT_TRUE(lit->measureError().metrics.air.note.empty());
+}
+
 }  // namespace
 }  // namespace shadows
