@@ -91,7 +91,12 @@ class ProjectiveTexture final : public Lesson {
     const LightFrustum frustum =
         f.light.frustum(static_cast<float>(slide_.width()) / static_cast<float>(slide_.height()));
     const glm::mat4 projection = lightProjection(frustum);
-    f.light_view_projection = projection * f.light.view;  // only its frustum is counted
+    // Only its frustum is counted; near and far do not bound the slide, so the counted frustum
+    // runs from the light to beyond the scene (x and y as the projection's).
+    LightFrustum counted = frustum;
+    counted.near = frustum.directional ? -1e4f : 1e-3f;
+    counted.far = 1e4f;
+    f.light_view_projection = lightProjection(counted) * f.light.view;
     const glm::vec3 axis = f.light.direction;
     const glm::vec4 projector_plane{axis, -glm::dot(axis, f.light.position)};
 

@@ -7,6 +7,7 @@ Prints each configuration and, per bias mode, the worst false shadow / false lit
 """
 import math
 import random
+import re
 import subprocess
 import sys
 
@@ -30,9 +31,10 @@ for _ in range(count):
                "--out", "/dev/null"]
         for s in sets:
             cmd += ["--set", s]
-        words = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout.split()
-        shadow = float(words[words.index("shadow") + 1].rstrip("%"))
-        lit = float(words[words.index("lit") + 1].rstrip("%"))
+        line = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout
+        # "false shadow 0.09%  false lit 0.24%" (the line also says "... without shadow").
+        shadow = float(re.search(r"false shadow\s+([0-9.]+)%", line).group(1))
+        lit = float(re.search(r"false lit\s+([0-9.]+)%", line).group(1))
         row += f"  {mode} {shadow:.2f}/{lit:.2f}"
         if shadow > worst[mode][0]:
             worst[mode][0], worst[mode][2] = shadow, f"{scene} {kind} light.pos={pos}"

@@ -70,12 +70,18 @@ class Atmospherics final : public Lesson {
 
   void render(Frame& f) override {
     loadSpot(image_(), falloff_());
-    // 1. The shadow map, lesson 04's default bias (back faces + glPolygonOffset(1.1, 4)).
-    if (map_.prepare(f)) map_.renderCasters(f, ShadowMap::backFacesBias(1.1f, 4.0f));
+    // 1. The shadow map, lesson 04's default bias (back faces + glPolygonOffset(1.1, 4)). Every
+    // object goes in, the floor and walls too: they cast nothing on a surface, but they shadow
+    // the air behind them (the dust beneath the floor, seen from below it).
+    if (map_.prepare(f)) {
+      map_.renderCasters(f, ShadowMap::backFacesBias(1.1f, 4.0f), Objects::Occluders);
+    }
     if (map_.drawDepthView(f)) return;
 
     const glm::mat4 cone = coneOfLight(f);
     f.medium = AirMedium{density_(), f.light.position, cone, &spot_, 64};
+    f.medium->directional = f.light.directional;  // its shadow rays run parallel
+    f.medium->light_direction = f.light.direction;
 
     // 2 and 3. The surfaces, lit through the spot texture and the shadow map.
     {
@@ -113,7 +119,8 @@ class Atmospherics final : public Lesson {
 
  private:
   // The lit air: the spot's frustum from the light to the farthest point of the scene, so it
-  // is the same whatever the map's near and far (light.near/far, shadow.fit) are set to.
+  // is the same whatever the map's near and far (light.near/far, shadow.fit) are set to. A
+  // directional light's box starts at the light too: what lies behind it gets no light.
   glm::mat4 coneOfLight(const Frame& f) const {
     // The map's aspect, so the map covers the whole lit cone (a non-square map widens it).
     LightFrustum frustum = f.light.frustum(static_cast<float>(map_.width()) /
@@ -121,7 +128,7 @@ class Atmospherics final : public Lesson {
     float near = frustum.near, far = frustum.far;
     if (fitNearFar(f.light.view, f.scene.bounds(), frustum.directional, near, far)) {
       frustum.far = far;
-      frustum.near = frustum.directional ? near : far * 1e-3f;
+      frustum.near = frustum.directional ? 0.0f : far * 1e-3f;
     }
     return lightProjection(frustum) * f.light.view;
   }
@@ -146,55 +153,54 @@ class Atmospherics final : public Lesson {
     map_.texture().bind(1);
   }
 
-  // Where the slices go: the view-depth range of the cone (the light's frustum) and, for each
-  // slice, the screen rectangle around the polygon its plane cuts out of the frustum; or the
-  // whole view's depth and the whole screen.
+  // Where the slices go: over the view-depth range of the cone (the light's frustum, where
+  // the air is) either way, so air.bound changes the cost and never the picture; bounded, each
+  // slice covers only the screen rectangle around the part of the frustum its jittered samples
+  // can reach, unbounded the whole screen.
   void sliceBounds(const Frame& f, const glm::mat4& cone, int count) {
-    const bool bound = bound_();
-    std::vector<glm::vec3> points;  // view space
-    if (bound) {
-      // The frustum's corners: near plane 0-3, far plane 4-7 (a spot's near corners lie a
-      // hair from its apex).
-      const glm::mat4 inverse = glm::inverse(cone);
-      for (float z : {-1.0f, 1.0f}) {
-        for (glm::vec2 c :
-             {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
-          const glm::vec4 corner = inverse * glm::vec4(c, z, 1.0f);
-          points.push_back(f.view * glm::vec4(glm::vec3(corner) / corner.w, 1.0f));
-        }
-      }
-    } else {
-      const Bounds b = f.scene.bounds();
-      for (int i = 0; i < 8; ++i) {
-        const glm::vec3 corner{i & 1 ? b.max.x : b.min.x, i & 2 ? b.max.y : b.min.y,
-                               i & 4 ? b.max.z : b.min.z};
-        points.push_back(f.view * glm::vec4(corner, 1.0f));
+    // The frustum's corners in view space: near plane 0-3, far plane 4-7 (a spot's near
+    // corners lie a hair from its apex).
+    std::vector<glm::vec3> points;
+    const glm::mat4 inverse = glm::inverse(cone);
+    for (float z : {-1.0f, 1.0f}) {
+      for (glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+        const glm::vec4 corner = inverse * glm::vec4(c, z, 1.0f);
+        points.push_back(f.view * glm::vec4(glm::vec3(corner) / corner.w, 1.0f));
       }
     }
     near_ = 1e30f, far_ = 0.0f;
     for (const glm::vec3& p : points) near_ = std::min(near_, -p.z), far_ = std::max(far_, -p.z);
-    near_ = std::max(near_, kEyeNear);
-    far_ = std::min(far_, 100.0f);
+    near_ = std::max(near_, f.scene.camera.near);  // what the eye pass can show
+    far_ = std::min(far_, f.scene.camera.far);
     step_ = far_ > near_ ? (far_ - near_) / static_cast<float>(count) : 0.0f;
     rects_.assign(static_cast<size_t>(count), glm::vec4(-1.0f, -1.0f, 1.0f, 1.0f));
-    if (!bound) return;
+    if (!bound_()) return;
     // The frustum's 12 edges: around the near plane, around the far plane, and between them.
     const int edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
                               {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
     for (int i = 0; i < count; ++i) {
-      const float depth = far_ - (static_cast<float>(i) + 0.5f) * step_;
+      // The slab [back, front] the slice's jittered samples span: the frustum's part in it is
+      // the hull of its edges' crossings with both planes and its corners in between.
+      const float back = far_ - static_cast<float>(i) * step_, front = back - step_;
       glm::vec2 lo(1e30f), hi(-1e30f);
+      auto add = [&](const glm::vec3& p) {
+        const glm::vec4 clip = f.projection * glm::vec4(p, 1.0f);
+        lo = glm::min(lo, glm::vec2(clip) / clip.w);
+        hi = glm::max(hi, glm::vec2(clip) / clip.w);
+      };
+      for (const glm::vec3& p : points) {
+        if (-p.z >= front && -p.z <= back) add(p);
+      }
       for (const auto& e : edges) {
         const glm::vec3 a = points[static_cast<size_t>(e[0])],
                         b = points[static_cast<size_t>(e[1])];
-        const float da = -a.z - depth, db = -b.z - depth;
-        if (da * db > 0.0f || da == db) continue;  // the edge does not cross this plane
-        const glm::vec3 crossing = a + (b - a) * (da / (da - db));
-        const glm::vec4 clip = f.projection * glm::vec4(crossing, 1.0f);
-        lo = glm::min(lo, glm::vec2(clip) / clip.w);
-        hi = glm::max(hi, glm::vec2(clip) / clip.w);
+        for (const float depth : {front, back}) {
+          const float da = -a.z - depth, db = -b.z - depth;
+          if (da * db > 0.0f || da == db) continue;  // the edge does not cross this plane
+          add(a + (b - a) * (da / (da - db)));
+        }
       }
-      // No crossing: the plane misses the pyramid, and an empty rectangle draws nothing.
+      // Nothing of the frustum in the slab: an empty rectangle draws nothing.
       rects_[static_cast<size_t>(i)] =
           lo.x > hi.x ? glm::vec4(0.0f)
                       : glm::vec4(glm::max(lo, glm::vec2(-1.0f)), glm::min(hi, glm::vec2(1.0f)));
@@ -263,8 +269,7 @@ class Atmospherics final : public Lesson {
   std::string spot_key_;
   GLuint empty_vao_ = 0;
   SamplesPassedQuery query_;
-  static constexpr float kEyeNear = 0.1f;  // the camera's near plane (scene presets)
-  std::vector<glm::vec4> rects_;           // per slice, back to front
+  std::vector<glm::vec4> rects_;  // per slice, back to front
   int slices_drawn_ = 0;
   float near_ = 0.0f, far_ = 0.0f, step_ = 0.0f;
   long long passed_ = 0;

@@ -6,7 +6,9 @@ uniform sampler2D uSpot;             // NEAREST, 0 outside: the truth reads the 
 uniform sampler2DShadow uShadowMap;  // compare mode on
 
 float spotLight(vec4 c) {
-  if (c.w <= 0.0) return 0.0;  // behind the light
+  // Behind the light, before its near or beyond its far plane: the frustum the truth clips the
+  // air to (B maps clip z from [-w, w] to [0, w]). The border of uSpot clips x and y.
+  if (c.w <= 0.0 || c.z < 0.0 || c.z > c.w) return 0.0;
   return dot(texture(uSpot, c.xy / c.w).rgb, vec3(0.2126, 0.7152, 0.0722));
 }
 

@@ -1,6 +1,7 @@
 // The truth for lesson 08's air: single scattering along each eye ray, with Embree shadow rays.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <thread>
 
@@ -12,16 +13,21 @@ namespace shadows {
 
 namespace {
 
-// The part [t0, t1] of the ray o + t d (0 <= t <= tmax) inside the light's frustum, up to its
-// far plane: every plane of clip space is linear in t. False when the ray misses it.
+// The part [t0, t1] of the ray o + t d (0 <= t <= tmax) inside the light's frustum, from its
+// near to its far plane: every plane of clip space is linear in t. False when the ray misses
+// it. The render's spotLight() clips to the same six planes.
 bool clipToFrustum(const glm::mat4& lightViewProjection, const glm::vec3& o, const glm::vec3& d,
                    float tmax, float& t0, float& t1) {
   const glm::vec4 c0 = lightViewProjection * glm::vec4(o, 1.0f);
   const glm::vec4 c1 = lightViewProjection * glm::vec4(d, 0.0f);
-  // a + b t >= 0 for w ± x, w ± y, w - z (far) and w (in front of the light).
-  const glm::vec2 planes[] = {{c0.w + c0.x, c1.w + c1.x}, {c0.w - c0.x, c1.w - c1.x},
-                              {c0.w + c0.y, c1.w + c1.y}, {c0.w - c0.y, c1.w - c1.y},
-                              {c0.w - c0.z, c1.w - c1.z}, {c0.w, c1.w}};
+  // a + b t >= 0 for w ± x, w ± y, w + z (near), w - z (far) and w (in front of the light).
+  const glm::vec2 planes[] = {{c0.w + c0.x, c1.w + c1.x},
+                              {c0.w - c0.x, c1.w - c1.x},
+                              {c0.w + c0.y, c1.w + c1.y},
+                              {c0.w - c0.y, c1.w - c1.y},
+                              {c0.w + c0.z, c1.w + c1.z},
+                              {c0.w - c0.z, c1.w - c1.z},
+                              {c0.w, c1.w}};
   t0 = 0.0f;
   t1 = tmax;
   for (const glm::vec2& p : planes) {
@@ -39,7 +45,7 @@ bool clipToFrustum(const glm::mat4& lightViewProjection, const glm::vec3& o, con
 }  // namespace
 
 Truth::AirResult Truth::airLight(const SurfaceBuffer& surface, const glm::vec3& eye,
-                                 const glm::mat4& inverseViewProjection, float maxDistance,
+                                 const glm::mat4& inverseViewProjection,
                                  const AirMedium& medium) const {
   const int w = surface.width, h = surface.height;
   if (surface.position.size() != static_cast<size_t>(w) * static_cast<size_t>(h)) {
@@ -55,12 +61,13 @@ Truth::AirResult Truth::airLight(const SurfaceBuffer& surface, const glm::vec3& 
     // The eye ray through the pixel centre (rows bottom-up, as glReadPixels gives them).
     const glm::vec2 ndc((static_cast<float>(x) + 0.5f) / static_cast<float>(w) * 2.0f - 1.0f,
                         (static_cast<float>(y) + 0.5f) / static_cast<float>(h) * 2.0f - 1.0f);
-    const glm::vec4 far_point = inverseViewProjection * glm::vec4(ndc, 1.0f, 1.0f);
-    const glm::vec3 d = glm::normalize(glm::vec3(far_point) / far_point.w - eye);
-    // Up to the first surface, or the far distance where the pixel sees none (its geometric
-    // normal was cleared to 0).
+    const glm::vec4 far_clip = inverseViewProjection * glm::vec4(ndc, 1.0f, 1.0f);
+    const glm::vec3 far_point = glm::vec3(far_clip) / far_clip.w;
+    const glm::vec3 d = glm::normalize(far_point - eye);
+    // What the eye pass shows along the ray: up to the first surface, or where the pixel sees
+    // none (its geometric normal was cleared to 0) up to the camera's far plane.
     const bool hit = surface.normal[i] != glm::vec4(0.0f);
-    const float tmax = hit ? glm::distance(eye, glm::vec3(surface.position[i])) : maxDistance;
+    const float tmax = glm::distance(eye, hit ? glm::vec3(surface.position[i]) : far_point);
     float t0 = 0.0f, t1 = 0.0f;
     if (!clipToFrustum(medium.light_view_projection, eye, d, tmax, t0, t1)) return;
     const std::uint32_t seed = hash32(static_cast<std::uint32_t>(i) * 0x9E3779B9u + 0x1234567u);
@@ -73,10 +80,16 @@ Truth::AirResult Truth::airLight(const SurfaceBuffer& surface, const glm::vec3& 
       const glm::vec2 st = glm::vec2(c) / c.w * 0.5f + 0.5f;
       const float spot = medium.spot != nullptr ? medium.spot->value(st) : 1.0f;
       if (spot <= 0.0f) continue;
-      const glm::vec3 to_light = medium.light_position - p;
-      const float dist = glm::length(to_light);
-      // Stop just short of the light, as the surface truth does.
-      if (dist > 0.0f && !unoccluded(p, to_light / dist, dist * (1.0f - 1e-4f))) continue;
+      if (medium.directional) {
+        if (!unoccluded(p, -medium.light_direction, std::numeric_limits<float>::infinity())) {
+          continue;
+        }
+      } else {
+        const glm::vec3 to_light = medium.light_position - p;
+        const float dist = glm::length(to_light);
+        // Stop just short of the light, as the surface truth does.
+        if (dist > 0.0f && !unoccluded(p, to_light / dist, dist * (1.0f - 1e-4f))) continue;
+      }
       half[k % 2] += spot;
     }
     // Each half is a stratified estimate of its own (every other stratum): their spread is
@@ -130,9 +143,11 @@ AirMetrics compareAir(const std::vector<float>& rendered, const Truth::AirResult
     truth_sum += t;
   }
   m.truth_noise = truth.noise;
+  m.valid = true;
+  // Both dark everywhere (no dust, or no lit air in view): they agree, nothing to compare.
+  if (m.pixels == 0) m.note = "no air light in the picture or the truth";
   if (m.pixels > 0) {
     const double n = static_cast<double>(m.pixels);
-    m.valid = true;
     m.mae = abs_sum / n;
     m.truth_mean = truth_sum / n;
     // No light in the truth but some in the picture: wholly wrong, not 0 % wrong.

@@ -31,8 +31,10 @@ struct Light {
   LightFrustum frustum(float aspect) const { return {directional, fov, extent, aspect, near, far}; }
 };
 
-// Which objects a draw takes.
-enum class Objects { All, Casters, Receivers };
+// Which objects a draw takes: All is the eye's view; Casters what can shadow a surface, as
+// the light sees it (SceneObject::castsFrom); Occluders every object, as the light sees it
+// (in dusty air every surface shadows the air behind it, the floor the air beneath it).
+enum class Objects { All, Casters, Receivers, Occluders };
 
 class Runner;
 

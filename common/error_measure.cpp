@@ -81,7 +81,6 @@ struct Runner::TruthInputs {
   std::vector<float> air_rendered;
   glm::vec3 eye{0.0f};
   glm::mat4 inverse_view_projection{1.0f};
-  float camera_far = 100.0f;
 };
 
 Runner::TruthInputs Runner::gatherTruthInputs() {
@@ -153,7 +152,6 @@ Runner::TruthInputs Runner::gatherTruthInputs() {
     in.air_rendered = renderRed("air");
     in.eye = params_.at("camera.pos").v();
     in.inverse_view_projection = glm::inverse(cameraProjection(w, h) * cameraView());
-    in.camera_far = scene_.camera.far;
   }
   measure_->setEnabled(was_enabled);
   return in;
@@ -206,8 +204,7 @@ Runner::TruthResult Runner::traceTruth(TruthInputs in) {
   m.air = AirMetrics{};
   if (in.medium) {
     // The truth and error views then show the air.
-    out.air = truth_scene.airLight(in.surface, in.eye, in.inverse_view_projection, in.camera_far,
-                                   *in.medium);
+    out.air = truth_scene.airLight(in.surface, in.eye, in.inverse_view_projection, *in.medium);
     m.air = compareAir(in.air_rendered, out.air);
     m.nonfinite_pixels += m.air.nonfinite;
     out.error_image = {w, h, airErrorImage(in.air_rendered, out.air.light)};

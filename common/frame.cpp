@@ -120,7 +120,10 @@ void Runner::drawObjects(const Frame& frame, const Program& program, Objects whi
   // offsets each polygon by its slope (glPolygonOffset): then a steep back face at a
   // silhouette may end up nearer than its front face, and a map must keep it.
   const bool offset_map = !eye_view && glIsEnabled(GL_POLYGON_OFFSET_FILL) == GL_TRUE;
-  const bool cull_solids = glIsEnabled(GL_CULL_FACE) == GL_FALSE && !offset_map;
+  const bool pass_culls = glIsEnabled(GL_CULL_FACE) == GL_TRUE;
+  const bool cull_solids = !pass_culls && !offset_map;
+  // A one-sided plane is its own back face: the light's passes draw it whatever they cull.
+  const bool light_view = which == Objects::Casters || which == Objects::Occluders;
   if (cull_solids) glCullFace(GL_BACK);
   if (eye_view) {
     std::vector<std::pair<bool, float>> key(order.size());  // bounds walk every vertex: once
@@ -148,7 +151,10 @@ void Runner::drawObjects(const Frame& frame, const Program& program, Objects whi
     // Every caster is a closed solid wound counter-clockwise from outside (the winding is
     // tested; seams close up to float rounding, so a silhouette pixel may move).
     if (cull_solids) object.caster ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
+    const bool unculled_plane = pass_culls && light_view && !object.caster;
+    if (unculled_plane) glDisable(GL_CULL_FACE);
     drawObject(program, i);
+    if (unculled_plane) glEnable(GL_CULL_FACE);
   }
   if (cull_solids) glDisable(GL_CULL_FACE);
 }

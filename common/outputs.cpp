@@ -77,6 +77,7 @@ void Runner::writeReport(JsonWriter& json) {
       json.value("air_truth_mean", e.air.truth_mean);
       json.value("air_truth_noise", e.air.truth_noise);
       json.value("air_pixels", e.air.pixels);
+      if (!e.air.note.empty()) json.value("air_note", e.air.note);
     }
     json.endObject();
   }

@@ -38,22 +38,23 @@ void ShadowMap::beginRender() const {
   glClear(GL_DEPTH_BUFFER_BIT);
 }
 
-void ShadowMap::renderCasters(Frame& f, const Program& depthProgram, const PassState& state) const {
+void ShadowMap::renderCasters(Frame& f, const Program& depthProgram, const PassState& state,
+                              Objects which) const {
   auto timing = f.measure.pass("shadow");
   beginRender();
   state.apply();
   const glm::mat4 light_view_projection = lightViewProjection();
   depthProgram.set("uLightViewProjection", light_view_projection);
-  f.drawObjects(depthProgram, Objects::Casters, &light_view_projection);
+  f.drawObjects(depthProgram, which, &light_view_projection);
   PassState{}.apply();
 }
 
-void ShadowMap::renderCasters(Frame& f, const PassState& state) {
+void ShadowMap::renderCasters(Frame& f, const PassState& state, Objects which) {
   if (depth_only_.id() == 0) {
     depth_only_ =
         Program(commonShaderDir() / "light_depth.vert", commonShaderDir() / "depth_only.frag");
   }
-  renderCasters(f, depth_only_, state);
+  renderCasters(f, depth_only_, state, which);
 }
 
 bool ShadowMap::drawDepthView(const Frame& frame) const {

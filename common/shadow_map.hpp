@@ -31,8 +31,10 @@ class ShadowMap {
   // light frustum (the others are culled and counted) with `depthProgram`, whose
   // uLightViewProjection = P_light * V_light is set here; leaves the default state behind.
   // Without a program: common/shaders/light_depth.vert + depth_only.frag, position only.
-  void renderCasters(Frame& frame, const Program& depthProgram, const PassState& state = {}) const;
-  void renderCasters(Frame& frame, const PassState& state = {});
+  // `which`: Objects::Occluders puts every object in (lesson 08: the air behind any surface).
+  void renderCasters(Frame& frame, const Program& depthProgram, const PassState& state = {},
+                     Objects which = Objects::Casters) const;
+  void renderCasters(Frame& frame, const PassState& state = {}, Objects which = Objects::Casters);
   // Kilgard's "depth buffer from the light's point of view": when frame.mode is
   // "light_depth", draws the map over the whole target and returns true.
   bool drawDepthView(const Frame& frame) const;

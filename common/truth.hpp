@@ -29,15 +29,19 @@ struct TruthLight {
 };
 
 // A participating medium for the truth (lesson 08, seed 000 "Combining Shadows with
-// Atmospherics"): homogeneous density inside a spotlight's frustum, from the light up to its
-// far plane, lit through the spotlight's texture and shadowed by the scene; single
-// scattering, no extinction (the air adds light and absorbs none).
+// Atmospherics"): homogeneous density inside a spotlight's frustum, between its near and far
+// planes, lit through the spotlight's texture and shadowed by the scene; single scattering,
+// no extinction (the air adds light and absorbs none).
 struct AirMedium {
   float density = 0.0f;  // light scattered toward the eye per world unit of lit air
   glm::vec3 light_position{0.0f};
-  glm::mat4 light_view_projection{1.0f};  // the spot's frustum
+  glm::mat4 light_view_projection{1.0f};  // the spot's frustum (orthographic: directional)
   const SpotTexture* spot = nullptr;      // the spot's light at (s, t); null = 1 everywhere
   int samples = 64;                       // stratified samples along each ray
+  // A directional light's rays are parallel: shadow rays leave along -light_direction (to
+  // infinity, as the surface truth's), not toward light_position.
+  bool directional = false;
+  glm::vec3 light_direction{0.0f, -1.0f, 0.0f};  // unit, from the light into the scene
 };
 
 // Value meaning "not counted" (no surface, or facing away from the light) in visibility images.
@@ -66,14 +70,14 @@ class Truth {
   bool unoccluded(const glm::vec3& origin, const glm::vec3& direction, float tfar) const;
 
   // Single scattering in a medium (lesson 08), integrated along every eye ray up to its first
-  // surface; see AirMedium. Deterministic like visibility().
+  // surface, or the camera's far plane (inverseViewProjection's) where it sees none; see
+  // AirMedium. Deterministic like visibility().
   struct AirResult {
     std::vector<float> light;  // in-scattered light per pixel (0 where the ray misses the cone)
     double noise = 0.0;        // mean over lit pixels of |half A - half B| / 2 (see air_truth.cpp)
   };
   AirResult airLight(const SurfaceBuffer& surface, const glm::vec3& eye,
-                     const glm::mat4& inverseViewProjection, float maxDistance,
-                     const struct AirMedium& medium) const;
+                     const glm::mat4& inverseViewProjection, const AirMedium& medium) const;
 
  private:
   struct Impl;
@@ -83,7 +87,8 @@ class Truth {
 
 // The air light against its truth, over the pixels where either is non-zero.
 struct AirMetrics {
-  bool valid = false;
+  bool valid = false;        // measured: the lesson has a medium (every field then reported)
+  std::string note;          // why the numbers are 0 when no pixel has air light in either
   double mae = 0.0;          // mean |rendered - truth|
   double rel_rmse = 0.0;     // sqrt(mean (rendered - truth)^2) / sqrt(mean truth^2); 1 when
                              // the truth has no light and the picture has some

@@ -40,17 +40,34 @@ glm::mat4 spotFrustum() {
          lookAtSafe(kLight, glm::vec3(0.0f));
 }
 
-// One pixel whose centre ray is the eye's axis, seeing no surface.
-float airOnTheAxis(const Truth& truth, const SpotTexture* spot, int samples,
-                   double* noise = nullptr) {
+// One pixel whose centre ray is the eye's axis, seeing no surface, in `medium`.
+float airOnTheAxis(const Truth& truth, const AirMedium& medium, double* noise = nullptr,
+                   float cameraFar = 100.0f) {
   SurfaceBuffer surface{1, 1, {glm::vec4(0, 0, 0, -1)}, {glm::vec4(0.0f)}};
   const glm::mat4 view = glm::lookAt(kEye, kEye + glm::vec3(1, 0, 0), glm::vec3(0, 1, 0));
-  const glm::mat4 projection = glm::perspective(glm::radians(10.0f), 1.0f, 0.1f, 100.0f);
-  const AirMedium medium{kDensity, kLight, spotFrustum(), spot, samples};
+  const glm::mat4 projection = glm::perspective(glm::radians(10.0f), 1.0f, 0.1f, cameraFar);
   const Truth::AirResult air =
-      truth.airLight(surface, kEye, glm::inverse(projection * view), 100.0f, medium);
+      truth.airLight(surface, kEye, glm::inverse(projection * view), medium);
   if (noise != nullptr) *noise = air.noise;
   return air.light[0];
+}
+
+// The same in the 60-degree spot.
+float airOnTheAxis(const Truth& truth, const SpotTexture* spot, int samples,
+                   double* noise = nullptr) {
+  return airOnTheAxis(truth, AirMedium{kDensity, kLight, spotFrustum(), spot, samples}, noise);
+}
+
+// A directional light straight down from kLight: a box of half width `extent` from `near` to
+// `far` below it.
+AirMedium directionalDown(float extent, float near, float far, int samples) {
+  AirMedium medium{kDensity, kLight,
+                   lightProjection({true, 60.0f, extent, 1.0f, near, far}) *
+                       lookAtSafe(kLight, kLight - glm::vec3(0.0f, 1.0f, 0.0f)),
+                   nullptr, samples};
+  medium.directional = true;
+  medium.light_direction = {0.0f, -1.0f, 0.0f};
+  return medium;
 }
 
 // Half the width of the frustum 5 below the light: 5 tan 30.
@@ -112,6 +129,49 @@ TEST(AirTruth, DoublingTheSamplesMovesLessThanTheNoiseItReports) {
   const float at128 = airOnTheAxis(truth, &spot, 128);
   EXPECT_LE(std::abs(at128 - at64), 3.0 * noise + 1e-6);
   EXPECT_EQ(airOnTheAxis(truth, &spot, 64), at64) << "deterministic";
+}
+
+TEST(AirTruth, NoAirBeforeTheNearPlaneOrBeyondTheFarPlane) {
+  // The eye ray runs 5 below the light: a frustum from 6 to 20, or from 0.5 to 4, misses it.
+  Mesh m;
+  addFloor(m);
+  const Truth truth(m.positions, m.triangles, 30.0f);
+  for (const glm::vec2 range : {glm::vec2(6.0f, 20.0f), glm::vec2(0.5f, 4.0f)}) {
+    const glm::mat4 spot = lightProjection({false, 60.0f, 10.0f, 1.0f, range.x, range.y}) *
+                           lookAtSafe(kLight, glm::vec3(0.0f));
+    EXPECT_EQ(airOnTheAxis(truth, AirMedium{kDensity, kLight, spot, nullptr, 64}), 0.0f)
+        << "spot " << range.x << ".." << range.y;
+    EXPECT_EQ(airOnTheAxis(truth, directionalDown(3.0f, range.x, range.y, 64)), 0.0f)
+        << "directional " << range.x << ".." << range.y;
+  }
+  // A directional light pointing away from the ray (its box starts at the light and runs up).
+  AirMedium away = directionalDown(3.0f, 0.0f, 20.0f, 64);
+  away.light_view_projection = lightProjection({true, 60.0f, 3.0f, 1.0f, 0.0f, 20.0f}) *
+                               lookAtSafe(kLight, kLight + glm::vec3(0.0f, 1.0f, 0.0f));
+  away.light_direction = {0.0f, 1.0f, 0.0f};
+  EXPECT_EQ(airOnTheAxis(truth, away), 0.0f);
+}
+
+TEST(AirTruth, ARayThatSeesNoSurfaceEndsAtTheCamerasFarPlane) {
+  // The eye pass shows nothing beyond its far plane: 12 from the eye, 2 past the light's axis.
+  Mesh m;
+  addFloor(m);
+  const Truth truth(m.positions, m.triangles, 30.0f);
+  const AirMedium medium{kDensity, kLight, spotFrustum(), nullptr, 64};
+  EXPECT_NEAR(airOnTheAxis(truth, medium, nullptr, 12.0f), kDensity * (kHalfChord + 2.0), 1e-4);
+}
+
+TEST(AirTruth, ADirectionalLightsShadowInTheAirIsACylinder) {
+  // A sphere of radius 1, 2.5 below the light and 2 to the side of it: parallel rays darken
+  // exactly 2 of the box's 8 on the eye ray (x from 1 to 3). Rays toward the light's position
+  // would darken a wider stretch, nearer the axis.
+  Mesh m;
+  addFloor(m);
+  addSphere(m, {2.0f, 7.5f, 0.0f}, 1.0f);
+  const Truth truth(m.positions, m.triangles, 30.0f);
+  const double expected = kDensity * (8.0 - 2.0);
+  EXPECT_NEAR(airOnTheAxis(truth, directionalDown(4.0f, 0.0f, 20.0f, 4096)), expected,
+              2.0 * kDensity * 8.0 / 4096 + 2e-3);
 }
 
 }  // namespace
