@@ -6,6 +6,7 @@
 //   configs.cpp     a sweep -> its configurations; the catalogue of sweeps; --set checks
 //   run.cpp         Bench (one round of one configuration), Reporter (the console table)
 //   tables.cpp      the CSV/JSON table, writing files, the checks on results and files
+//   front.cpp       the table as CSV, read back; its Pareto fronts (front.hpp)
 //   plot.cpp        the plot's data and gnuplot
 #pragma once
 
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "app.hpp"
+#include "front.hpp"
 #include "sweep_spec.hpp"
 
 namespace shadows::bench {
@@ -134,17 +136,10 @@ class Reporter : public benchmark::ConsoleReporter {
 
 // ---- tables.cpp
 
-struct Table {
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-  std::vector<bool> numeric;  // per column: written unquoted in JSON
-};
-
 std::string number(double v);  // "%.6g", "nan" for what is not finite
 // Columns: lesson, scene, each axis, size and frames, timings, work, error, renderer.
 Table makeTable(const std::vector<const Config*>& configs,
                 const std::vector<const Result*>& results, const Options& o);
-std::string toCsv(const Table& t);
 std::string toJson(const Table& t, const std::string& lesson, const Options& o);
 // Written next to the final name, then renamed: a reader never sees half a file.
 bool writeFile(const std::filesystem::path& path, const std::string& text);

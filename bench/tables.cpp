@@ -11,26 +11,6 @@
 #include "json.hpp"
 
 namespace shadows::bench {
-namespace {
-
-std::string csvField(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-  return q + "\"";
-}
-
-std::string csvLine(const std::vector<std::string>& fields) {
-  std::string line;
-  for (size_t i = 0; i < fields.size(); ++i) {
-    if (i > 0) line += ',';
-    line += csvField(fields[i]);
-  }
-  return line;
-}
-
-}  // namespace
-
 std::string number(double v) {
   if (!std::isfinite(v)) return "nan";
   char buf[32];
@@ -131,11 +111,6 @@ Table makeTable(const std::vector<const Config*>& configs,
     t.rows.push_back(std::move(row));
   }
   return t;
-}
-std::string toCsv(const Table& t) {
-  std::string out = csvLine(t.header) + "\n";
-  for (const auto& row : t.rows) out += csvLine(row) + "\n";
-  return out;
 }
 
 std::string toJson(const Table& t, const std::string& lesson, const Options& o) {
