@@ -160,7 +160,8 @@ void markFronts(Table& t, const std::string& time_column, const std::vector<std:
   for (const auto& key : keys) {
     const std::vector<size_t>& rows = members[key];
     // A scene with one truth is named by the scene; otherwise by the swept values that its
-    // groups do not share (lesson 05: pcf.radius=1 shadow.size=1024 or pcf.radius=2 ...).
+    // groups do not share (lesson 05: "torus_pyramid; one truth (area r=0.0345) for pcf.radius=1
+    // shadow.size=1024 or pcf.radius=2 shadow.size=2048").
     std::vector<std::pair<std::string, std::string>> siblings;
     for (const auto& k : keys) {
       if (k.first == key.first) siblings.push_back(k);
@@ -193,11 +194,8 @@ void markFronts(Table& t, const std::string& time_column, const std::vector<std:
       }
       std::string which;
       for (const auto& c : combos) which += (which.empty() ? "" : " or ") + c;
-      if (which.empty()) {
-        name.append(", truth ").append(key.second);
-      } else {
-        name.append(", the truth of ").append(which).append(" (").append(key.second).append(")");
-      }
+      name.append("; one truth (").append(key.second).append(")");
+      if (!which.empty()) name.append(" for ").append(which);
     }
     for (size_t m = 0; m < metrics.size(); ++m) {
       std::vector<TimeError> points;

@@ -48,7 +48,8 @@ double metricValue(const Table& t, size_t row, const std::string& metric);
 //   front_group       the rows whose errors compare: the same scene and the same truth (lesson
 //                     05's area light grows with pcf.radius / shadow.size, and an error against
 //                     another truth is another question); named by the scene, and where a scene
-//                     has several, by what tells them apart in `axes` and by the truth
+//                     has several, by the truth and what tells them apart in `axes`:
+//                     "torus_pyramid; one truth (area r=0.0345) for pcf.radius=1 ..."
 //   front_time        `time_column`, the time the front was taken on (the plot's x)
 //   on_front.<metric> 1 or 0 within the row's group, for each metric
 // Columns already there are overwritten; rows that did not run get empty cells.

@@ -6,11 +6,32 @@
 #include <cstdlib>
 #include <fstream>
 #include <set>
+#include <thread>
 
 #include "bench.hpp"
 #include "json.hpp"
 
 namespace shadows::bench {
+namespace {
+
+// The CPU the times were taken on, for the plot's title: "2 cores, Intel(R) Xeon(R) ...".
+std::string machineName() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string model;
+  for (std::string line; std::getline(in, line);) {
+    if (line.starts_with("model name")) {
+      model = line.substr(line.find(':') + 1);
+      model.erase(0, model.find_first_not_of(" \t"));
+      break;
+    }
+  }
+  const unsigned cores = std::thread::hardware_concurrency();
+  return std::to_string(cores) + (cores == 1 ? " core" : " cores") +
+         (model.empty() ? "" : " of " + model);
+}
+
+}  // namespace
+
 std::string number(double v) {
   if (!std::isfinite(v)) return "nan";
   char buf[32];
@@ -18,8 +39,9 @@ std::string number(double v) {
   return buf;
 }
 
-// Columns: lesson, scene, each axis, size and frames, timings, work, error, renderer. Passes and
-// counters are the union over all rows, so a lesson with more passes gets more columns.
+// Columns: lesson, scene, each axis, size and frames, timings, work, error, renderer, machine.
+// Passes and counters are the union over all rows, so a lesson with more passes gets more
+// columns.
 Table makeTable(const std::vector<const Config*>& configs,
                 const std::vector<const Result*>& results, const Options& o) {
   std::set<std::string> passes, counts;
@@ -66,8 +88,10 @@ Table makeTable(const std::vector<const Config*>& configs,
   column("truth", false);
   column("gl_errors", true);
   column("renderer", false);
+  column("machine", false);
   column("status", false);
 
+  const std::string machine = machineName();
   for (size_t i = 0; i < configs.size(); ++i) {
     const Config& c = *configs[i];
     const Result& r = *results[i];
@@ -107,6 +131,7 @@ Table makeTable(const std::vector<const Config*>& configs,
     row.push_back(e ? r.error.truth : "");
     row.push_back(std::to_string(r.gl_errors));
     row.push_back(r.renderer);
+    row.push_back(machine);
     row.push_back(r.done ? "ok" : "failed: " + r.failure);
     t.rows.push_back(std::move(row));
   }
