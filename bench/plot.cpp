@@ -135,12 +135,12 @@ struct Label {
   Segment line{};
 };
 
-// Greedy: each label in turn takes the cheapest spot that stays inside the panel and off every
-// other label and front point. A spot costs its gap to the point (beyond 10 px a leader line
-// joins them, at most kMaxLeader long), plus extra for each faint point it covers, each line it
-// crosses and each line its leader crosses. Spots are tried around the point first, then on a
-// grid over the whole panel. Where nothing fits the label is left out (the SVG and the README
-// table still name the point).
+// Greedy: each label in turn takes the cheapest spot that stays inside the panel, off every
+// other label and front point, and clear of the other marked points. A spot costs its gap to the
+// point (beyond 10 px a leader line joins them, at most kMaxLeader long), plus extra for each faint
+// point it covers, each line it crosses and each line its leader crosses. Spots are tried around
+// the point first, then on a grid over the whole panel. Where nothing fits the label is left out
+// (the SVG and the README table still name the point).
 void placeLabels(std::vector<Label>& labels, const std::vector<Mark>& marks,
                  std::vector<Segment> lines, const Box& area) {
   // Down-left first: below and left of a front nothing is better, so that space is empty.
@@ -194,9 +194,12 @@ void placeLabels(std::vector<Label>& labels, const std::vector<Mark>& marks,
           if (p.front || p.is_default) blocked = true;
           cost += 25.0;
         }
-        // A label right next to another marked point would seem to name it.
-        if (i != label.mark && (p.front || p.is_default) && box.holds(p.px, p.py, r + 14.0)) {
-          cost += 20.0;
+        // A label right next to another marked point would seem to name it: without a leader
+        // it must be nearer its own point than any other, with one keep 14 px off the others.
+        if (i != label.mark && (p.front || p.is_default)) {
+          const double dx = std::max({box.x0 - p.px, 0.0, p.px - box.x1});
+          const double dy = std::max({box.y0 - p.py, 0.0, p.py - box.y1});
+          if (std::hypot(dx, dy) < (far ? 14.0 : std::max(gap, 5.0) + 4.0)) blocked = true;
         }
         // So would a leader passing over it.
         if (far && i != label.mark && (p.front || p.is_default) &&
