@@ -34,9 +34,9 @@ do for [row = 1:nrows] {
 
 set terminal pngcairo size 1600, 540 * nrows + 110 font "DejaVu Sans,11" noenhanced
 set output out
-# The right 22% holds the legend, so every panel gets the same width.
+# The right 24% holds the legend, so every panel gets the same width.
 set multiplot layout nrows, nscenes title title font ",13" \
-    margins 0.06, 0.78, 0.07, 0.88 spacing 0.07, 0.1
+    margins 0.06, 0.76, 0.07, 0.88 spacing 0.07, 0.1
 set logscale xy
 set xrange [xmin / 1.5 : xmax * 1.5]
 set grid xtics ytics mxtics mytics lc rgb "#dddddd", lc rgb "#eeeeee"
@@ -57,8 +57,8 @@ do for [row = 1:nrows] {
       set title word(scenes, s) font ",13"
       set ylabel word(ylabels, row)
       if (row == 1 && s == nscenes) {
-        set key at screen 0.795, 0.86 left top Left reverse samplen 4 spacing 1.4 box \
-            lc rgb "#bbbbbb" title key_title
+        set key at screen 0.775, 0.86 left top Left reverse samplen 3 spacing 1.3 box \
+            lc rgb "#bbbbbb" title key_title font ",10"
       } else {
         unset key
       }
