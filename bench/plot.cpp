@@ -51,12 +51,16 @@ std::string gnuplotText(const std::string& s) {
   return q + "\"";
 }
 
-// A quoted string in the data file: no quote inside, line breaks as the two characters \n
-// (plot.gp splits them; a data file's strings take no escapes).
+// A quoted string in the data file: line breaks as the two characters \n (plot.gp splits them;
+// a data file's strings take no escapes), quotes as a typographic apostrophe, since the SVG
+// puts hover texts into single-quoted JavaScript as they are.
 std::string datString(const std::string& s) {
   std::string q = "\"";
-  for (char ch : s)
-    q += ch == '"' ? std::string("'") : ch == '\n' ? std::string("\\n") : std::string(1, ch);
+  for (char ch : s) {
+    q += ch == '"' || ch == '\'' ? std::string("\u2019")
+         : ch == '\n'            ? std::string("\\n")
+                                 : std::string(1, ch);
+  }
   return q + "\"";
 }
 
@@ -412,6 +416,8 @@ std::string frontPlotData(const std::filesystem::path& dat, const std::string& n
       for (const auto& s : rowSettings(sweep, t, r)) literal += (literal.empty() ? "" : " ") + s;
       for (const auto& l : wrap(literal, 60)) lines.push_back(l);
     }
+    // The rest of the settings, so the hover text is the whole configuration.
+    for (const auto& l : wrap(fixedLine(sweep, sets), 60)) lines.push_back(l);
     char line[160];
     std::snprintf(line, sizeof line, "CPU %.3g ms per frame; frame %.3g ms median, %.3g fastest",
                   t.value(r, "cpu_ms"), t.value(r, "frame_ms"), t.value(r, "frame_min_ms"));
