@@ -1,10 +1,10 @@
 // Lesson 05's time-vs-error sweep for bench_sweep (bench/README.md).
 #include "sweep_spec.hpp"
 
-// Along a series, kernels from cheapest to dearest, so the plot shows where 001's 4-tap dither
-// sits against 64 taps. All points of a series share the radius and the map size, hence the
-// same area-light truth ("none" and hw2x2 have their own and are left out); early_out=false
-// shows what skipping settled neighbourhoods saves.
+// Kernels from cheapest to dearest, so the front shows where 001's 4-tap dither sits against 64
+// taps. The radius in texels and the map size set the area light of the truth (a radius of 1 at
+// 2048 is a radius of 2 at 1024): each truth gets its own front ("none" and hw2x2 have a hard
+// truth and are left out); early_out=false shows what skipping settled neighbourhoods saves.
 SHADOWS_SWEEP(
     {.scenes = {"torus_pyramid", "dueling"},
      .axes = {{"kernel",

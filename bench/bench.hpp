@@ -6,7 +6,8 @@
 //   configs.cpp     a sweep -> its configurations; the catalogue of sweeps; --set checks
 //   run.cpp         Bench (one round of one configuration), Reporter (the console table)
 //   tables.cpp      the CSV/JSON table, writing files, the checks on results and files
-//   plot.cpp        the plot's data and gnuplot
+//   front.cpp       the table as CSV, read back; its Pareto fronts (front.hpp)
+//   plot.cpp        the plots' data, label placement and gnuplot (plot.gp, plot_along.gp)
 #pragma once
 
 #include <benchmark/benchmark.h>
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "app.hpp"
+#include "front.hpp"
 #include "sweep_spec.hpp"
 
 namespace shadows::bench {
@@ -34,6 +36,8 @@ struct Options {
   std::string plot_x = "cpu";
   // --set name=value from the command line, after every configuration's own settings.
   std::vector<std::string> sets;
+  // --replot: run nothing, mark and plot this CSV.
+  std::filesystem::path replot;
 };
 
 struct Config {
@@ -80,6 +84,14 @@ std::string checkSets(const std::string& name, const Sweep& sweep,
                       const std::vector<std::string>& sets);
 // scenes x axes (thinned by --quick, three by --smoke), axes[0] fastest.
 std::vector<Config> expand(const std::string& name, const Sweep& sweep, const Options& o);
+// What row `row` of a sweep's table sets: its axes' settings, bundles expanded ("lesson=NAME"
+// included for a study).
+std::vector<std::string> rowSettings(const Sweep& sweep, const Table& t, size_t row);
+// Adds `settings` (what each row sets, in its lesson's parameter names; a study's in its own
+// axis=label words) and `is_default` (1 where every setting the axes make is the rendering
+// lesson's default). Returns, for a lesson's sweep, the lesson's defaults of every parameter
+// the axes set ("pcf.mode=dithered pcf.taps=16 ..."), for the plot's key.
+std::string describeConfigs(Table& t, const std::string& name, const Sweep& sweep);
 
 // ---- run.cpp
 
@@ -134,17 +146,10 @@ class Reporter : public benchmark::ConsoleReporter {
 
 // ---- tables.cpp
 
-struct Table {
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-  std::vector<bool> numeric;  // per column: written unquoted in JSON
-};
-
 std::string number(double v);  // "%.6g", "nan" for what is not finite
-// Columns: lesson, scene, each axis, size and frames, timings, work, error, renderer.
+// Columns: lesson, scene, each axis, size and frames, timings, work, error, renderer, machine.
 Table makeTable(const std::vector<const Config*>& configs,
                 const std::vector<const Result*>& results, const Options& o);
-std::string toCsv(const Table& t);
 std::string toJson(const Table& t, const std::string& lesson, const Options& o);
 // Written next to the final name, then renamed: a reader never sees half a file.
 bool writeFile(const std::filesystem::path& path, const std::string& text);
@@ -156,12 +161,13 @@ std::vector<std::string> checkFiles(const std::filesystem::path& csv,
 
 // ---- plot.cpp
 
-// Writes the plot's data to `path`; returns the -e variables for plot.gp ("" on failure).
-std::string writePlotData(const std::filesystem::path& path, const std::string& lesson,
-                          const Sweep& sweep, const std::vector<const Config*>& configs,
-                          const std::vector<const Result*>& results, const Options& o);
-// 0 plotted, 1 gnuplot failed, -1 no gnuplot (a note, not a failure).
-int runGnuplot(const std::string& variables, const std::filesystem::path& png,
-               const std::filesystem::path& log);
+// From a table marked by describeConfigs and markFronts: <name>.png and <name>.svg (error
+// against time with the front; plot.gp), and <name>_along.png for a plot_along sweep
+// (plot_along.gp), each with its .plot.dat; gnuplot's messages in <name>.plot.log. `defaults`
+// is describeConfigs' answer, `sets` bench_sweep's --set. 0 plotted (the files appended to
+// `written`), 1 failed, -1 no gnuplot (a note, not a failure).
+int plotSweep(const std::string& name, const Sweep& sweep, const Table& t,
+              const std::string& defaults, const std::vector<std::string>& sets,
+              const std::filesystem::path& out_dir, std::vector<std::filesystem::path>& written);
 
 }  // namespace shadows::bench

@@ -1,5 +1,6 @@
 // From a sweep to its configurations, and which sweeps there are.
 #include <algorithm>
+#include <memory>
 #include <set>
 
 #include "bench.hpp"
@@ -113,6 +114,76 @@ std::vector<Config> expand(const std::string& name, const Sweep& sweep, const Op
     }
   }
   return configs;
+}
+
+std::vector<std::string> rowSettings(const Sweep& sweep, const Table& t, size_t row) {
+  std::vector<std::string> sets;
+  for (const Axis& axis : sweep.axes) {
+    for (const std::string& value : axis.values) {
+      const auto [label, value_sets] = settingsOf(axis, value);
+      if (label != t.cell(row, axis.name)) continue;
+      sets.insert(sets.end(), value_sets.begin(), value_sets.end());
+      break;
+    }
+  }
+  return sets;
+}
+
+std::string describeConfigs(Table& t, const std::string& name, const Sweep& sweep) {
+  const size_t settings_col = t.addColumn("settings", false);
+  const size_t default_col = t.addColumn("is_default", true);
+  // One parameter set at its defaults per lesson that renders this sweep (no GL).
+  std::map<std::string, std::unique_ptr<Runner>> probes;
+  auto paramsOf = [&](const std::string& lesson) -> Params& {
+    auto& probe = probes[lesson];
+    if (!probe) probe = std::make_unique<Runner>(lesson, makeLesson(lesson), RunOptions{});
+    return probe->params();
+  };
+  // A setting is at its default when assigning it leaves the parameter's text unchanged.
+  auto atDefault = [&](const std::string& lesson, const std::string& set) {
+    Params& defaults = paramsOf(lesson);
+    const std::string param = set.substr(0, set.find('='));
+    const Param* p = defaults.find(param);
+    if (p == nullptr) return false;
+    Params changed = defaults;
+    return changed.assign(set).empty() && changed.at(param).text() == p->text();
+  };
+  for (size_t r = 0; r < t.rows.size(); ++r) {
+    const std::vector<std::string> sets = rowSettings(sweep, t, r);
+    std::string lesson = sweep.study ? t.cell(r, "lesson") : name;
+    std::string text;
+    bool is_default = !lesson.empty() && !sets.empty();
+    if (sweep.study) {  // a study's axes are its own words: map=D24, not five settings
+      for (const Axis& axis : sweep.axes) {
+        text += (text.empty() ? "" : " ") + axis.name + "=" + t.cell(r, axis.name);
+      }
+    }
+    for (const std::string& set : sets) {
+      if (set.starts_with("lesson=")) continue;
+      if (!sweep.study) text += (text.empty() ? "" : " ") + set;
+      is_default = is_default && atDefault(lesson, set);
+    }
+    t.rows[r][settings_col] = text;
+    t.rows[r][default_col] = is_default ? "1" : "0";
+  }
+  if (sweep.study) return {};
+  // The lesson's defaults of every parameter the sweep's axes set, for the plot's key.
+  std::vector<std::string> names;
+  for (const Axis& axis : sweep.axes) {
+    for (const std::string& value : axis.values) {
+      for (const std::string& set : settingsOf(axis, value).second) {
+        const std::string param = set.substr(0, set.find('='));
+        if (std::find(names.begin(), names.end(), param) == names.end()) names.push_back(param);
+      }
+    }
+  }
+  std::string defaults;
+  for (const std::string& param : names) {
+    if (const Param* p = paramsOf(name).find(param)) {
+      defaults += (defaults.empty() ? "" : " ") + param + "=" + p->text();
+    }
+  }
+  return defaults;
 }
 
 }  // namespace shadows::bench

@@ -1,84 +1,95 @@
-# Time against error for one lesson's sweep. bench_sweep calls it with -e setting:
-#   data     the .plot.dat: one block per (scene, series), scene-major, two blank lines apart;
-#            columns 1 frame_ms  2 cpu_ms  3 frame_min_ms  4 vis_mae  5 false_shadow_pct
-#            6 false_lit_pct  7 shade_mae  8 a point's label  9 the value of `along`
-#            10 air_rel_rmse (%)  11 air_mae (lesson 08; nan elsewhere)
-#   out      the PNG to write;  title  the page title
-#   xcol, xlabel  the time column and its axis label
-#   scenes   scene names: one column of panels each
-#   nseries, titles (quoted words), colors, dashes: one word per series
-#   present  per scene a quoted word listing the series (1-based) that have points
-#   along    the knob that changes along each line
-#   ycols, ylabels (quoted words): one row of panels per error metric
-nscenes = words(scenes)
-nrows = words(ycols)
+# Error against time for one sweep, with its Pareto front. bench_sweep (plot.cpp) decides the
+# panels, the ranges and where every label goes; this only draws. Called with -e setting:
+#   term     png, or svg (hovering a point shows its settings, time and error)
+#   out, width, height (pixels), title (may hold line breaks)
+#   data     five blocks per panel p, at index 5(p-1) + 0 the other points and + 1 the front in
+#            cost order (columns: time, error, hover text with \n for line breaks), + 2 the
+#            lesson's default, + 3 label lines (time, error, text, colour 0xRRGGBB; left end
+#            and middle of the line), + 4 leader lines (two-point segments)
+#   npanels; per panel, words: p_left p_right p_bottom p_top (screen fractions of the plot
+#            area), p_ymin p_ymax, p_ysteps p_titles p_ylabels (quoted)
+#   xmin, xmax, xsteps, xlabel: the time axis, shared by every panel
+#   key_x, key_y (screen), key_front, key_other, key_default, note
 set datafile missing "nan"
+# The two characters \n to line breaks (a data file's strings take no escapes).
+lines(s) = (i = strstrt(s, "\\n"), i == 0 ? s : s[1:i - 1] . "\n" . lines(s[i + 2:]))
+# Fonts in points; the SVG's are pixels, cairo's PNG has 4/3 as many pixels as points.
+px = (term eq "svg") ? 4.0 / 3.0 : 1.0
+font(pt) = sprintf("DejaVu Sans,%g", pt * px)
+front_color = "#1f5fa8"
+other_color = "#b9b9b9"
+default_color = "#d0362c"
+f9 = font(9)
+f10 = font(10)
+f11 = font(11)
+f13 = font(13)
 
-# Ranges rounded out to 1-2-5 steps, shared by all panels (x) and along a row (y), so panels
-# compare at a glance.
-step(v) = 10 ** floor(log10(v) + 1e-9)
-eps = 1e-9
-nice_below(v) = (m = v / step(v), (m >= 5 - eps ? 5 : m >= 2 - eps ? 2 : 1) * step(v))
-nice_above(v) = (m = v / step(v), \
-                 (m <= 1 + eps ? 1 : m <= 2 + eps ? 2 : m <= 5 + eps ? 5 : 10) * step(v))
-stats data using xcol nooutput
-xmin = nice_below(STATS_min)
-xmax = nice_above(STATS_max)
-if (xmax <= xmin) { xmax = 10 * xmin }
-array ymin[nrows]
-array ymax[nrows]
-do for [row = 1:nrows] {
-  stats data using int(word(ycols, row)) nooutput
-  ymin[row] = nice_below(STATS_min)
-  ymax[row] = nice_above(STATS_max)
-  if (ymax[row] <= ymin[row]) { ymax[row] = 10 * ymin[row] }
+if (term eq "svg") {
+  set terminal svg size width, height mouse standalone font f10 noenhanced background "white"
+} else {
+  set terminal pngcairo size width, height font f10 noenhanced
 }
-
-set terminal pngcairo size 1600, 540 * nrows + 90 font "DejaVu Sans,11" noenhanced
 set output out
-# The right 22% holds the legend, so every panel gets the same width.
-set multiplot layout nrows, nscenes title title font ",14" \
-    margins 0.06, 0.78, 0.07, 0.91 spacing 0.07, 0.1
+set multiplot title title font f13
 set logscale xy
 set xrange [xmin:xmax]
-set grid xtics ytics mxtics mytics lc rgb "#dddddd", lc rgb "#eeeeee"
+set grid xtics ytics mxtics mytics lc rgb "#dddddd", lc rgb "#f0f0f0"
 set format x "%g"
 set format y "%g"
-# Labelled tics at 1, 2 and 5 of every decade, not only at the decades; a knob that spans
-# many decades (xcol 9, e.g. a bias) gets one label per decade, or they would overlap.
+# Labelled tics at the multiples of each decade that xsteps and p_ysteps list (more where a
+# decade is long on the page), not only at the decades.
+set xtics
 do for [e = -6:6] {
-  if (xcol != 9) { set xtics add (2 * 10.0 ** e, 5 * 10.0 ** e) }
-  set ytics add (2 * 10.0 ** e, 5 * 10.0 ** e)
+  do for [k in xsteps] { set xtics add (real(k) * 10.0 ** e) }
 }
-set xlabel xlabel . ", log scale"
-do for [row = 1:nrows] {
-  ycol = int(word(ycols, row))
-  set yrange [ymin[row]:ymax[row]]
-  do for [s = 1:nscenes] {
-    here = word(present, s)
-    if (words(here) == 0) {
-      set multiplot next
-    } else {
-      first = int(word(here, 1))
-      set title word(scenes, s) font ",13"
-      set ylabel word(ylabels, row) . ", log scale"
-      if (row == 1 && s == nscenes) {
-        key_title = "one line per knob combination;\nalong a line: " . along . \
-            "\n(labels on the first line,\nalternately up-left and down-right)" . \
-            "\nerror 0 is drawn at half a pixel\n"
-        set key at screen 0.795, 0.89 left top Left reverse samplen 4 spacing 1.4 box \
-            lc rgb "#bbbbbb" title key_title
-      } else {
-        unset key
-      }
-      plot for [k in here] data index ((s - 1) * nseries + int(k) - 1) using xcol:ycol \
-             with linespoints lw 2 pt 7 ps 0.9 lc int(word(colors, int(k))) \
-             dt int(word(dashes, int(k))) title word(titles, int(k)), \
-           data index ((s - 1) * nseries + first - 1) every 2::0 using xcol:ycol:8 \
-             with labels offset -1.6, 0.7 font ",9" tc rgb "#333333" notitle, \
-           data index ((s - 1) * nseries + first - 1) every 2::1 using xcol:ycol:8 \
-             with labels offset 1.6, -0.7 font ",9" tc rgb "#333333" notitle
-    }
+set xlabel xlabel font f10
+if (strlen(note) > 0) {
+  set label 1 note at screen key_x, key_y - 74.0 / height left font f10 tc rgb "#555555"
+}
+do for [p = 1:npanels] {
+  set lmargin at screen real(word(p_left, p))
+  set rmargin at screen real(word(p_right, p))
+  set bmargin at screen real(word(p_bottom, p))
+  set tmargin at screen real(word(p_top, p))
+  ylo = real(word(p_ymin, p))
+  yhi = real(word(p_ymax, p))
+  set yrange [ylo:yhi]
+  set ytics
+  ysteps = word(p_ysteps, p)
+  do for [e = -6:6] {
+    do for [k in ysteps] { set ytics add (real(k) * 10.0 ** e) }
+  }
+  set title lines(word(p_titles, p)) font f11
+  set ylabel lines(word(p_ylabels, p)) font f10
+  if (p == 1) {
+    set key at screen key_x, key_y left top vertical Left reverse samplen 3 spacing 1.25 \
+        font f10 nobox
+  } else {
+    unset key
+  }
+  b = 5 * (p - 1)
+  if (term eq "svg") {
+    plot data index b using 1:2:(lines(stringcolumn(3))) \
+           with labels hypertext point pt 7 ps 0.7 lc rgb other_color notitle, \
+         data index b + 1 using 1:2 with steps lw 2.5 lc rgb front_color notitle, \
+         data index b + 1 using 1:2:(lines(stringcolumn(3))) \
+           with labels hypertext point pt 7 ps 1.2 lc rgb front_color notitle, \
+         data index b + 2 using 1:2 with points pt 6 ps 2.6 lw 2 lc rgb default_color notitle, \
+         data index b + 4 using 1:2 with lines lw 1 lc rgb "#888888" notitle, \
+         data index b + 3 using 1:2:3:4 with labels left font f9 tc rgb variable notitle, \
+         keyentry with linespoints lw 2.5 pt 7 ps 1.2 lc rgb front_color title key_front, \
+         keyentry with points pt 7 ps 0.7 lc rgb other_color title key_other, \
+         keyentry with points pt 6 ps 2.6 lw 2 lc rgb default_color title key_default
+  } else {
+    plot data index b using 1:2 with points pt 7 ps 0.7 lc rgb other_color notitle, \
+         data index b + 1 using 1:2 with steps lw 2.5 lc rgb front_color notitle, \
+         data index b + 1 using 1:2 with points pt 7 ps 1.2 lc rgb front_color notitle, \
+         data index b + 2 using 1:2 with points pt 6 ps 2.6 lw 2 lc rgb default_color notitle, \
+         data index b + 4 using 1:2 with lines lw 1 lc rgb "#888888" notitle, \
+         data index b + 3 using 1:2:3:4 with labels left font f9 tc rgb variable notitle, \
+         keyentry with linespoints lw 2.5 pt 7 ps 1.2 lc rgb front_color title key_front, \
+         keyentry with points pt 7 ps 0.7 lc rgb other_color title key_other, \
+         keyentry with points pt 6 ps 2.6 lw 2 lc rgb default_color title key_default
   }
 }
 unset multiplot

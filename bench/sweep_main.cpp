@@ -1,7 +1,8 @@
 // bench_sweep: the time-vs-error benchmark. For one lesson (or all that have a sweep) it renders
 // every configuration of a sweep (scenes x the Cartesian product of parameter axes) headless,
 // times N frames after a warm-up, measures the error against the ray-traced truth, and writes
-// DIR/<lesson>.csv, DIR/<lesson>.json and a gnuplot plot DIR/<lesson>.png.
+// DIR/<lesson>.csv, DIR/<lesson>.json and gnuplot plots of error against time with the Pareto
+// front, DIR/<lesson>.png and .svg. --replot draws them again from a CSV.
 //
 // Google Benchmark drives the runs: one registered benchmark per configuration with a fixed
 // iteration count (= frames) and manual time (= the runner's glFinish-bracketed frame time), the
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <regex>
@@ -26,9 +28,10 @@ const char* kUsage =
     "usage: bench_sweep [--lesson NAME | --all] [--out-dir DIR] [--size WxH] [--frames N]\n"
     "                   [--rounds R] [--smoke] [--quick] [--plot-x cpu|min|median] [--no-plot]\n"
     "                   [--set name=value ...] [--benchmark_... flags]\n"
+    "       bench_sweep [--lesson NAME] --replot FILE.csv [--out-dir DIR] [--plot-x ...]\n"
     "  --lesson NAME  the lesson to sweep (default 03_shadow_map_basic); --all: every lesson\n"
     "                 with a sweep\n"
-    "  --out-dir DIR  where <lesson>.csv, .json and .png go (default bench/results)\n"
+    "  --out-dir DIR  where <lesson>.csv, .json, .png and .svg go (default bench/results)\n"
     "  --size WxH     render size (default 640x480; --smoke: 160x120)\n"
     "  --frames N     timed frames per round after one warm-up (default 5; --smoke 1; --quick 3)\n"
     "  --rounds R     visits per configuration, in shuffled order; the CSV has the median over\n"
@@ -41,6 +44,8 @@ const char* kUsage =
     "  --set name=value  a lesson parameter for every configuration (repeatable), as the\n"
     "                 lessons' --set takes it; checked against every lesson the sweep renders\n"
     "  --no-plot      skip gnuplot\n"
+    "  --replot FILE  run nothing: mark the fronts of a CSV bench_sweep wrote and plot it into\n"
+    "                 DIR (the sweep: --lesson, else the CSV's lesson column)\n"
     "Google Benchmark's own flags (e.g. --benchmark_filter=cubes) are passed through.\n";
 
 // Returns "" or what was wrong (exit 2). --size, --frames, --rounds and --set read and say
@@ -79,6 +84,9 @@ std::string parse(int argc, char** argv, Options& o, bool& all) {
       o.plot_x = v;
     } else if (arg == "--no-plot") {
       o.plot = false;
+    } else if (arg == "--replot") {
+      if (!args.value(v) || v.empty()) return "--replot needs a CSV file";
+      o.replot = v;
     } else {
       return unknownOption(arg);
     }
@@ -86,6 +94,10 @@ std::string parse(int argc, char** argv, Options& o, bool& all) {
   }
   if (all && !o.lessons.empty()) return "--all and --lesson exclude each other";
   if (o.smoke && o.quick) return "--smoke and --quick exclude each other";
+  if (!o.replot.empty() && (all || o.smoke || o.quick || !o.sets.empty() || o.lessons.size() > 1)) {
+    return "--replot draws one CSV as it is: not with --all, --smoke, --quick, --set or a "
+           "second --lesson";
+  }
   if (o.smoke && !o.size_given) o.width = 160, o.height = 120;
   if (!o.frames_given) o.frames = o.smoke ? 1 : o.quick ? 3 : 5;
   if (!o.rounds_given) o.rounds = o.smoke || o.quick ? 1 : 3;
@@ -115,6 +127,79 @@ std::string joined(const std::vector<std::string>& names) {
   return s;
 }
 
+// The files of one sweep from its table: the front and the default marked into it (both
+// readers, the plot and bench/tables.py, take them from there), the CSV and the JSON, the plots.
+// Returns what went wrong; `table` keeps the columns added.
+std::vector<std::string> finishSweep(const std::string& name, Table& table, const Options& o) {
+  const Sweep& sweep = allSweeps().at(name);
+  const std::string defaults = describeConfigs(table, name, sweep);
+  std::vector<std::string> axes;
+  for (const Axis& axis : sweep.axes) axes.push_back(axis.name);
+  const std::string time_column = o.plot_x == "cpu"   ? "cpu_ms"
+                                  : o.plot_x == "min" ? "frame_min_ms"
+                                                      : "frame_ms";
+  markFronts(table, time_column, sweep.plot_metrics, axes);
+  const auto csv = o.out_dir / (name + ".csv");
+  const auto json = o.out_dir / (name + ".json");
+  if (!writeFile(csv, toCsv(table)) || !writeFile(json, toJson(table, name, o))) {
+    return {"cannot write " + csv.string()};
+  }
+  std::vector<std::string> problems;
+  if (o.smoke) problems = checkFiles(csv, json, table);
+  std::string written = csv.string() + ", " + json.string();
+  const bool any_ok = std::any_of(table.rows.begin(), table.rows.end(), [&](const auto& row) {
+    return row[static_cast<size_t>(table.column("status"))] == "ok";
+  });
+  if (o.plot && any_ok) {
+    std::vector<std::filesystem::path> plots;
+    const int plot = plotSweep(name, sweep, table, defaults, o.sets, o.out_dir, plots);
+    for (const auto& p : plots) written += ", " + p.string();
+    if (plot < 0) {
+      std::fprintf(stderr,
+                   "bench_sweep: note: gnuplot not found, no plot (apt install "
+                   "gnuplot-nox); the CSV and JSON are complete\n");
+    } else if (plot > 0) {
+      problems.push_back("no plot: gnuplot or a plot script failed, see " +
+                         (o.out_dir / (name + ".plot.log")).string());
+    }
+  }
+  std::fprintf(stderr, "%s: %zu configurations -> %s\n", name.c_str(), table.rows.size(),
+               written.c_str());
+  return problems;
+}
+
+// --replot: the sweep's files again from a CSV it wrote, nothing rendered.
+int replot(Options o) {
+  Table table;
+  if (std::string e = readCsv(o.replot, table); !e.empty()) {
+    std::fprintf(stderr, "bench_sweep: %s\n", printable(e).c_str());
+    return 2;
+  }
+  if (table.rows.empty() || table.column("status") < 0 || table.column("scene") < 0) {
+    std::fprintf(stderr, "bench_sweep: %s: not a CSV bench_sweep wrote\n",
+                 printable(o.replot.string()).c_str());
+    return 2;
+  }
+  const std::string name = o.lessons.empty() ? table.cell(0, "lesson") : o.lessons.front();
+  if (!allSweeps().contains(name)) {
+    std::fprintf(stderr, "bench_sweep: no sweep '%s' (a study's CSV needs --lesson NAME)\n",
+                 printable(name).c_str());
+    return 2;
+  }
+  // The run's size and samples, for the JSON, from the CSV.
+  auto count = [&](const char* column, int fallback) {
+    const double v = table.value(0, column);
+    return std::isfinite(v) ? static_cast<int>(v) : fallback;
+  };
+  o.width = count("width", o.width);
+  o.height = count("height", o.height);
+  o.frames = count("frames", o.frames);
+  o.rounds = count("rounds", o.rounds);
+  const auto problems = finishSweep(name, table, o);
+  for (const auto& p : problems) std::fprintf(stderr, "bench_sweep: FAIL %s\n", p.c_str());
+  return problems.empty() ? 0 : 1;
+}
+
 int sweepMain(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
@@ -142,7 +227,7 @@ int sweepMain(int argc, char** argv) {
   std::vector<std::string> with_sweep;
   for (const auto& [name, sweep] : allSweeps()) with_sweep.push_back(name);
   if (all) o.lessons = with_sweep;
-  if (o.lessons.empty()) o.lessons = {"03_shadow_map_basic"};
+  if (o.lessons.empty() && o.replot.empty()) o.lessons = {"03_shadow_map_basic"};
   for (const auto& lesson : o.lessons) {
     if (std::find(with_sweep.begin(), with_sweep.end(), lesson) == with_sweep.end()) {
       std::fprintf(stderr, "bench_sweep: no sweep for lesson '%s'; lessons with one: %s\n",
@@ -165,6 +250,7 @@ int sweepMain(int argc, char** argv) {
     return 2;
   }
   std::filesystem::remove(probe, ec);
+  if (!o.replot.empty()) return replot(o);
 
   std::vector<Config> configs;
   for (const auto& lesson : o.lessons) {
@@ -220,37 +306,10 @@ int sweepMain(int argc, char** argv) {
       }
     }
     if (cs.empty()) continue;
-    const Table table = makeTable(cs, rs, o);
-    const auto csv = o.out_dir / (lesson + ".csv");
-    const auto json = o.out_dir / (lesson + ".json");
-    const auto png = o.out_dir / (lesson + ".png");
-    if (!writeFile(csv, toCsv(table)) || !writeFile(json, toJson(table, lesson, o))) {
-      std::fprintf(stderr, "bench_sweep: cannot write %s\n", csv.string().c_str());
-      return 1;
-    }
+    Table table = makeTable(cs, rs, o);
     std::vector<std::string> problems = checkResults(cs, rs);
-    if (o.smoke) {
-      auto file_problems = checkFiles(csv, json, table);
-      problems.insert(problems.end(), file_problems.begin(), file_problems.end());
-    }
-    std::string plotted;
-    if (o.plot && std::any_of(rs.begin(), rs.end(), [](const Result* r) { return r->done; })) {
-      const auto dat = o.out_dir / (lesson + ".plot.dat");
-      const std::string vars = writePlotData(dat, lesson, allSweeps().at(lesson), cs, rs, o);
-      const auto log = o.out_dir / (lesson + ".plot.log");
-      const int plot = vars.empty() ? 1 : runGnuplot(vars, png, log);
-      if (plot < 0) {
-        std::fprintf(stderr,
-                     "bench_sweep: note: gnuplot not found, no plot (apt install "
-                     "gnuplot-nox); the CSV and JSON are complete\n");
-      } else if (plot > 0) {
-        problems.push_back("no plot: gnuplot or plot.gp failed on " + dat.string());
-      } else {
-        plotted = ", " + png.string();
-      }
-    }
-    std::fprintf(stderr, "%s: %zu configurations -> %s, %s%s\n", lesson.c_str(), cs.size(),
-                 csv.string().c_str(), json.string().c_str(), plotted.c_str());
+    const auto more = finishSweep(lesson, table, o);
+    problems.insert(problems.end(), more.begin(), more.end());
     for (const auto& p : problems) std::fprintf(stderr, "bench_sweep: FAIL %s\n", p.c_str());
     if (!problems.empty()) status = 1;
   }

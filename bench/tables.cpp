@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <set>
+#include <thread>
 
 #include "bench.hpp"
 #include "json.hpp"
@@ -13,20 +14,20 @@
 namespace shadows::bench {
 namespace {
 
-std::string csvField(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-  return q + "\"";
-}
-
-std::string csvLine(const std::vector<std::string>& fields) {
-  std::string line;
-  for (size_t i = 0; i < fields.size(); ++i) {
-    if (i > 0) line += ',';
-    line += csvField(fields[i]);
+// The CPU the times were taken on, for the plot's title: "2 cores, Intel(R) Xeon(R) ...".
+std::string machineName() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string model;
+  for (std::string line; std::getline(in, line);) {
+    if (line.starts_with("model name")) {
+      model = line.substr(line.find(':') + 1);
+      model.erase(0, model.find_first_not_of(" \t"));
+      break;
+    }
   }
-  return line;
+  const unsigned cores = std::thread::hardware_concurrency();
+  return std::to_string(cores) + (cores == 1 ? " core" : " cores") +
+         (model.empty() ? "" : " of " + model);
 }
 
 }  // namespace
@@ -38,8 +39,9 @@ std::string number(double v) {
   return buf;
 }
 
-// Columns: lesson, scene, each axis, size and frames, timings, work, error, renderer. Passes and
-// counters are the union over all rows, so a lesson with more passes gets more columns.
+// Columns: lesson, scene, each axis, size and frames, timings, work, error, renderer, machine.
+// Passes and counters are the union over all rows, so a lesson with more passes gets more
+// columns.
 Table makeTable(const std::vector<const Config*>& configs,
                 const std::vector<const Result*>& results, const Options& o) {
   std::set<std::string> passes, counts;
@@ -86,8 +88,10 @@ Table makeTable(const std::vector<const Config*>& configs,
   column("truth", false);
   column("gl_errors", true);
   column("renderer", false);
+  column("machine", false);
   column("status", false);
 
+  const std::string machine = machineName();
   for (size_t i = 0; i < configs.size(); ++i) {
     const Config& c = *configs[i];
     const Result& r = *results[i];
@@ -127,15 +131,11 @@ Table makeTable(const std::vector<const Config*>& configs,
     row.push_back(e ? r.error.truth : "");
     row.push_back(std::to_string(r.gl_errors));
     row.push_back(r.renderer);
+    row.push_back(machine);
     row.push_back(r.done ? "ok" : "failed: " + r.failure);
     t.rows.push_back(std::move(row));
   }
   return t;
-}
-std::string toCsv(const Table& t) {
-  std::string out = csvLine(t.header) + "\n";
-  for (const auto& row : t.rows) out += csvLine(row) + "\n";
-  return out;
 }
 
 std::string toJson(const Table& t, const std::string& lesson, const Options& o) {

@@ -8,6 +8,7 @@ READMEs quote comes from a command anyone can re-run:
   bench/tables.py copy bench/results/06_dual_texture_8bit.csv bench/results/07_multidigit_16bit.csv
   bench/tables.py cost bench/results/shadow_cost.csv
   bench/tables.py pcf bench/results/pcf_cost.csv
+  bench/tables.py front bench/results/05_pcf_dithered.csv   # any sweep's CSV: the table under its plot
 """
 import csv
 import statistics
@@ -139,6 +140,51 @@ def pcf(path):
         print(f"| {kernel} | " + " | ".join(cells) + " |")
 
 
+# The plot's words for its error metrics (bench/plot.cpp), as column heads.
+METRIC_HEADS = {
+    "vis_mae": "vis_mae", "false_shadow_pct": "false shadow %", "false_lit_pct": "false lit %",
+    "shade_mae": "shade_mae", "air_rel_rmse_pct": "air rel. RMSE %", "air_mae": "air_mae",
+}
+TIME_HEADS = {"cpu_ms": "CPU ms/frame", "frame_min_ms": "fastest frame ms",
+              "frame_ms": "median frame ms"}
+
+
+def metric_value(r, metric):
+    if metric == "air_rel_rmse_pct":
+        v = num(r, "air_rel_rmse")
+        return None if v is None else 100 * v
+    return num(r, metric)
+
+
+def front(path):
+    """The Pareto fronts bench_sweep marked in a sweep's CSV (on_front.<metric>, front_group;
+    computed once, in bench/front.cpp): per group, every configuration on some metric's front,
+    cheapest first, its error in bold where it is on that metric's front; and the lesson's
+    default, on a front or not."""
+    data = rows(path)
+    metrics = [k[len("on_front."):] for k in (data[0].keys() if data else []) if k.startswith("on_front.")]
+    if not metrics:
+        sys.exit(f"{path}: no on_front columns (written by bench_sweep, or bench_sweep --replot)")
+    time = data[0]["front_time"]
+    for group in ordered(r["front_group"] for r in data if r["front_group"]):
+        here = [r for r in data if r["front_group"] == group]
+        shown = [r for r in here if r.get("is_default") == "1"
+                 or any(r[f"on_front.{m}"] == "1" for m in metrics)]
+        shown.sort(key=lambda r: (num(r, time), r["settings"]))
+        print(f"\n{group}: the front, cheapest first (**bold**: on that error's front)\n")
+        print(f"| setting | {TIME_HEADS.get(time, time)} | " +
+              " | ".join(METRIC_HEADS.get(m, m) for m in metrics) + " |")
+        print("|---|---|" + "---|" * len(metrics))
+        for r in shown:
+            cells = []
+            for m in metrics:
+                v = metric_value(r, m)
+                text = "—" if v is None else f"{v:.3g}"
+                cells.append(f"**{text}**" if r[f"on_front.{m}"] == "1" else text)
+            name = r["settings"] + (" (default)" if r.get("is_default") == "1" else "")
+            print(f"| {name} | {num(r, time):.3g} | " + " | ".join(cells) + " |")
+
+
 if __name__ == "__main__":
     if len(sys.argv) >= 3 and sys.argv[1] == "precision":
         precision(sys.argv[2])
@@ -146,6 +192,8 @@ if __name__ == "__main__":
         cost(sys.argv[2])
     elif len(sys.argv) >= 3 and sys.argv[1] == "pcf":
         pcf(sys.argv[2])
+    elif len(sys.argv) >= 3 and sys.argv[1] == "front":
+        front(sys.argv[2])
     elif len(sys.argv) >= 3 and sys.argv[1] == "copy":
         copy(sys.argv[2:])
     else:

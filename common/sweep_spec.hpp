@@ -36,8 +36,9 @@ inline std::pair<std::string, std::vector<std::string>> settingsOf(const Axis& a
   return {value.substr(0, colon), sets};
 }
 
-// scenes x axes. axes[0] is the knob that runs along each plotted series (it also varies fastest,
-// so the points of one series are measured back to back); the other axes pick the series.
+// scenes x axes. axes[0] varies fastest, so neighbouring values of it are measured back to back;
+// with plot_along it is also the x axis of <name>_along.png, the other axes picking its lines.
+// The main plot (error against time, with the Pareto front) does not depend on the order.
 struct Sweep {
   std::vector<std::string> scenes;
   std::vector<Axis> axes;
@@ -45,7 +46,7 @@ struct Sweep {
   // The error metrics plotted against time, one row of panels each: any of vis_mae,
   // false_shadow_pct, false_lit_pct, shade_mae, air_rel_rmse_pct, air_mae.
   std::vector<std::string> plot_metrics = {"vis_mae"};
-  // Plot against axes[0]'s (numeric) value instead of time, for knobs that cost nothing
+  // Also plot against axes[0]'s (numeric) value (<name>_along.png), for knobs that cost nothing
   // (a bias): there the question is how error moves with the knob.
   bool plot_along = false;
   // A study across lessons: its name is no lesson, and its bundles say `lesson=NAME`.
