@@ -66,7 +66,7 @@ class DualTexture8bit final : public Lesson {
     ImGui::Text("light near %.3f  far %.3f  (far/near %.0f)%s", fr.near, fr.far, fr.far / fr.near,
                 map_.light().fitted() ? " fitted" : "");
     ImGui::TextDisabled("one 8-bit step = %.4g world units at the far plane", stepAtFar());
-    ImGui::Text("pass 2 lit %lld fragments", lit_fragments_);
+    ImGui::Text("pass 2 lit %s fragments", countText(lit_fragments_).c_str());
   }
 
   void report(JsonWriter& json) const override {
@@ -116,7 +116,7 @@ class DualTexture8bit final : public Lesson {
   DepthReadback map_{1};
   ProgramVariants variants_;
   SamplesPassedQuery query_;
-  long long lit_fragments_ = 0;
+  std::optional<long long> lit_fragments_ = 0;  // empty: this context cannot count them
   BoolParam ramp_lookup_, dimmed_, lit_;
   FloatParam dimming_;
 };
