@@ -88,7 +88,6 @@ class ProjectedPlanar final : public Lesson {
     }
     if (projecting) drawShadows(f, mode);
     PassState{}.apply();
-    glDisable(GL_CLIP_DISTANCE0);
   }
 
   void panel(Frame& f) override {
@@ -207,7 +206,7 @@ class ProjectedPlanar final : public Lesson {
     state.depth_write = false;
     state.polygon_offset = fix_offset_();
     state.offset_factor = -1.0f, state.offset_units = -2.0f;
-    if (fix_clip_()) glEnable(GL_CLIP_DISTANCE0);
+    state.clip_plane = fix_clip_();
     shadow_program_.set("uClip", fix_clip_() ? 1 : 0);
     state.blend = true;
     if (mode == 2) {

@@ -1,5 +1,9 @@
 #version 330 core
 // A shadow polygon is one flat colour; the blend function decides what it does.
+#include "clip_plane_in.glsl"
 uniform vec4 uShadowColor;
 out vec4 outColor;
-void main() { outColor = uShadowColor; }
+void main() {
+  clipFragment();
+  outColor = uShadowColor;
+}

@@ -8,14 +8,14 @@ uniform mat4 uViewProjection;
 uniform vec4 uPlane;         // P = (A, B, C, D), oriented so that P.L > 0
 uniform int uClip;           // 1: clip at the receiver plane
 uniform int uDivide;         // 1: divide by w here, as slide 15's similar triangles do
-out float gl_ClipDistance[1];
+#include "clip_plane_out.glsl"
 
 void main() {
   vec4 world = uModel * vec4(aPosition, 1.0);
   // Only what lies on the light's side of the receiver can shadow it (seed 003: "objects
   // behind receiver"); the rest is clipped away. (llvmpipe was seen to clip by a written
   // distance even with GL_CLIP_DISTANCE0 disabled, so "off" writes a distance that keeps.)
-  gl_ClipDistance[0] = uClip == 1 ? dot(uPlane, world) : 1.0;
+  setClipDistance(uClip == 1 ? dot(uPlane, world) : 1.0);
   // w = P.L - P.v: positive below the light, 0 at its height, negative above it. Left as
   // it is, the clipper cuts each triangle at w = 0 and keeps only what can cast.
   vec4 shadow = uShadowMatrix * world;

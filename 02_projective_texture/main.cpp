@@ -170,7 +170,7 @@ class ProjectiveTexture final : public Lesson {
     if (behind == "clip") {
       // Clipping makes new vertices whose depths are not bit-identical to pass 1's, so the
       // cut triangles would fail an EQUAL test: compare LEQUAL, nudged toward the eye.
-      glEnable(GL_CLIP_DISTANCE0);
+      add.clip_plane = true;
       add.polygon_offset = true;
       add.offset_factor = add.offset_units = -1.0f;
       add.depth_func = GL_LEQUAL;
@@ -187,7 +187,6 @@ class ProjectiveTexture final : public Lesson {
       f.drawObject(program_, i);
     }
     f.measure.count("skipped_behind_projector", skipped_);
-    glDisable(GL_CLIP_DISTANCE0);
     PassState{}.apply();
   }
 
@@ -198,13 +197,9 @@ class ProjectiveTexture final : public Lesson {
     if (name == loaded_ && slide_.id() != 0) return;
     const Image image = name == "builtin" ? makeSlide(256) : readPng(path);
     slide_ = Texture::color(image.width, image.height, GL_RGBA8);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
-                    image.rgba.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-    const float black[4] = {0, 0, 0, 1};
-    glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, black);
+    slide_.upload(GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    slide_.setWrap(GL_CLAMP_TO_BORDER, GL_CLAMP_TO_BORDER);
+    slide_.setBorder(glm::vec4(0, 0, 0, 1));
     loaded_ = name;
   }
 

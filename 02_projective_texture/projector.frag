@@ -2,6 +2,8 @@
 // The slide projector (seed 004 "Projective texturing pixel shader"): the colour at
 // (s/q, t/q), fetched by textureProj, lights the surface like a coloured spotlight.
 #include "lighting.glsl"
+#include "border.glsl"
+#include "clip_plane_in.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -43,6 +45,7 @@ bool reaches() {
 }
 
 void main() {
+  clipFragment();
   vec3 n = normalize(vNormal);
   if (uMode == 2) {  // texcoords: (s/q, t/q) as red/green, blue where q < 0 (no fix applied)
     vec2 st = vSlideCoord.st / vSlideCoord.q;
@@ -61,6 +64,8 @@ void main() {
     return;
   }
   float nl = max(dot(n, directionToLight(vWorld)), 0.0);
-  vec3 slide = textureProj(uSlide, vSlideCoord).rgb;  // at (s/q, t/q)
+  vec2 st = vSlideCoord.st / vSlideCoord.q;
+  vec3 slide = withBorder(textureProj(uSlide, vSlideCoord), st, vec2(textureSize(uSlide, 0)),
+                          vec4(0.0, 0.0, 0.0, 1.0), true).rgb;  // at (s/q, t/q), border black
   outColor = vec4(uColor * 0.85 * nl * slide * spot(), 1.0);
 }

@@ -12,7 +12,7 @@ uniform int uClip;             // 1: clip away what lies behind the projector
 out vec3 vWorld;
 out vec3 vNormal;
 out vec4 vSlideCoord;
-out float gl_ClipDistance[1];
+#include "clip_plane_out.glsl"
 
 void main() {
   vec4 world = uModel * vec4(aPosition, 1.0);
@@ -22,6 +22,6 @@ void main() {
   // Seed 000: "use a clip plane positioned at the plane defined by the light position and
   // spotlight direction". (llvmpipe was seen to clip by a written distance even with
   // GL_CLIP_DISTANCE0 disabled, so "off" writes a distance that keeps everything.)
-  gl_ClipDistance[0] = uClip == 1 ? dot(uProjectorPlane, world) : 1.0;
+  setClipDistance(uClip == 1 ? dot(uProjectorPlane, world) : 1.0);
   gl_Position = uViewProjection * world;
 }

@@ -2,6 +2,7 @@
 // Pass 2: compare the fragment's light depth B = r/q with the map's A at (s/q, t/q).
 // sampler2DShadow does the compare in hardware: 1 where B <= A (lit), 0 where B > A.
 #include "lighting.glsl"
+#include "border.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -21,6 +22,7 @@ float shadowTerm() {
   if (c.w <= 0.0) return 1.0;  // behind a spot light: outside its frustum, the map says nothing
   // Beyond the far plane: clamp B to 1 so every depth format behaves alike (16/24-bit clamp).
   c.z = min(c.z, c.w);
+  if (outsideTexture(c.xy / c.w, vec2(textureSize(uShadowMap, 0)))) return 1.0;  // the border
   return textureProj(uShadowMap, c);
 }
 

@@ -28,17 +28,22 @@ float lightSpaceDepthStep(vec3 p, float distance) {
   return b.z / b.w - a.z / a.w;
 }
 
+// The stored depth at uv, 1 ("nothing in front") outside the map (border.glsl).
+float storedDepth(sampler2D depthMap, vec2 uv) {
+  return outsideTexture(uv, vec2(textureSize(depthMap, 0))) ? 1.0 : texture(depthMap, uv).r;
+}
+
 // Seed 002 (Ogre): the stored depth A plus a bias from the map itself: the depth gradient over
 // the neighbouring texels (clamped, since across a silhouette it jumps to another surface)
 // times `scale`, plus a constant expressed in light space. Returns A + bias.
 float gradientBiasedDepth(sampler2D depthMap, vec2 uv, vec3 p, float scale, float constant,
                           float clampDistance) {
   vec2 texel = 1.0 / vec2(textureSize(depthMap, 0));
-  float centre = texture(depthMap, uv).r;
-  vec4 depths = vec4(texture(depthMap, uv - vec2(texel.x, 0.0)).r,
-                     texture(depthMap, uv + vec2(texel.x, 0.0)).r,
-                     texture(depthMap, uv - vec2(0.0, texel.y)).r,
-                     texture(depthMap, uv + vec2(0.0, texel.y)).r);
+  float centre = storedDepth(depthMap, uv);
+  vec4 depths = vec4(storedDepth(depthMap, uv - vec2(texel.x, 0.0)),
+                     storedDepth(depthMap, uv + vec2(texel.x, 0.0)),
+                     storedDepth(depthMap, uv - vec2(0.0, texel.y)),
+                     storedDepth(depthMap, uv + vec2(0.0, texel.y)));
   vec2 differences = abs(depths.yw - depths.xz);
   float gradient = min(lightSpaceDepthStep(p, clampDistance), max(differences.x, differences.y));
   return centre + gradient * scale + lightSpaceDepthStep(p, constant);

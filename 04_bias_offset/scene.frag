@@ -2,6 +2,7 @@
 // Pass 2: compare the fragment's light depth B with the map's A, with the receiver's share of
 // the bias (seed 002's gradient, or normal offset); the other modes biased A in pass 1.
 #include "lighting.glsl"
+#include "border.glsl"
 #include "receiver_bias.glsl"
 
 in vec3 vWorld;
@@ -34,6 +35,10 @@ float shadowTerm(vec3 n, out float margin) {
   margin = a - c.z;
   return c.z <= a ? 1.0 : 0.0;
 #else
+  if (outsideTexture(c.xy, vec2(textureSize(uShadowMap, 0)))) {  // the border: depth 1
+    margin = 1.0 - c.z;
+    return 1.0;
+  }
 #if VIEW == VIEW_BIAS_MARGIN
   margin = texture(uShadowDepth, c.xy).r - c.z;
 #endif

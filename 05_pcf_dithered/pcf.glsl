@@ -2,6 +2,7 @@
 // first, then average the results, never the depths. Every tap is one sampler2DShadow lookup.
 // The tap offsets are not computed here: pcf_math.hpp (tapOffsets) computes them on the CPU
 // and main.cpp passes them as uTaps, so the unit tests check the very offsets the shader uses.
+#include "border.glsl"
 uniform sampler2DShadow uShadowMap;
 // Compiled per setting (main.cpp): PCF_MODE is pcf.mode (PCF_MODE_NONE .. PCF_MODE_POISSON);
 // PCF_EARLY_OUT 1: stop after 4 probe taps that agree.
@@ -17,7 +18,9 @@ bool gStopped = false;  // the probes agreed and the rest were skipped
 
 float tap(vec3 c, vec2 offsetTexels) {
   gTaps++;
-  return texture(uShadowMap, vec3(c.xy + offsetTexels * uTexel, c.z));
+  vec2 uv = c.xy + offsetTexels * uTexel;
+  if (outsideTexture(uv, vec2(textureSize(uShadowMap, 0)))) return 1.0;  // the border: lit
+  return texture(uShadowMap, vec3(uv, c.z));
 }
 
 // N x N taps at the midpoints of a box of half-width radius: the box filter's midpoint rule.

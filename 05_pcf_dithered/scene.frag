@@ -1,8 +1,11 @@
 #version 430 core
 // Pass 2: the shadow term by percentage-closer filtering, into 000's illumination model with
 // dimming. Taps are counted per fragment into a buffer: llvmpipe's statistics count fragment
-// invocations, not texture lookups.
+// invocations, not texture lookups. (Buffers and early tests are GL 4.3 and 4.2: without them,
+// on GL 4.1 and ES, PCF_COUNT is 0 and the counters are unavailable.)
+#if HAS_EARLY_FRAGMENT_TESTS
 layout(early_fragment_tests) in;  // count only fragments that passed the depth test
+#endif
 #include "lighting.glsl"
 #include "pcf.glsl"
 
@@ -14,18 +17,22 @@ uniform vec3 uColor;
 // and PCF_COUNT 1 that adds this fragment's work to the counters (atomics cost; compiled out
 // when off).
 out vec4 outColor;
+#if PCF_COUNT
 layout(std430, binding = 0) buffer Counters {
   uint taps;         // shadow-map lookups
   uint filtered;     // fragments that ran the filter
   uint stopped;      // ... of which stopped after the probes
   uint facing_away;  // fragments that skipped it: facing away from the light
 };
+#endif
 
 float shadowTerm(vec3 n, vec3 toLight) {
   // Facing away from the light (the geometric normal, as the truth sees it): in its own
   // shadow, whatever the map says. No taps.
   if (dot(n, toLight) <= 0.0) {
-    if (PCF_COUNT == 1) atomicAdd(facing_away, 1u);
+#if PCF_COUNT
+    atomicAdd(facing_away, 1u);
+#endif
     return 0.0;
   }
   vec4 c = vShadowCoord;
@@ -33,11 +40,11 @@ float shadowTerm(vec3 n, vec3 toLight) {
   vec3 p = c.xyz / c.w;
   p.z = min(p.z, 1.0);  // beyond the far plane: every depth format clamps B to 1
   float shade = percentageCloser(p);
-  if (PCF_COUNT == 1) {
-    atomicAdd(taps, uint(gTaps));
-    atomicAdd(filtered, 1u);
-    if (gStopped) atomicAdd(stopped, 1u);
-  }
+#if PCF_COUNT
+  atomicAdd(taps, uint(gTaps));
+  atomicAdd(filtered, 1u);
+  if (gStopped) atomicAdd(stopped, 1u);
+#endif
   return shade;
 }
 

@@ -14,21 +14,21 @@
 in vec3 vWorld;
 in vec3 vNormal;
 uniform sampler2D uMap;   // Tex0
-uniform sampler1D uRamp;  // Tex1
+uniform Ramp uRamp;       // Tex1 (ramp.glsl: 1D, or 256x1 where there are no 1D textures)
 uniform vec3 uColor;
 // Also compiled per VIEW (colour, visibility; the views ramp: Tex1, difference: texenv alpha
 // - 0.5) and RAMP_LOOKUP (0: compare with the exact fragment depth instead of Tex1).
 out vec4 outColor;
 
 float mapSteps() {
-  float v = texture(uMap, mapCoord()).r;
+  float v = mapTexel(uMap).r;
   return uMapIsDepth == 1 ? depthToSteps(v, 255.0, uReadbackNearest) : floor(v * 255.0 + 0.5);
 }
 
 float fragmentSteps() {
   float s = fragmentDepth();
 #if RAMP_LOOKUP
-  return floor(texture(uRamp, s).r * 255.0 + 0.5);
+  return floor(rampTexel(uRamp, s) * 255.0 + 0.5);
 #else
   return min(clamp(s, 0.0, 1.0) * 255.0, 254.5);  // exact, below the cleared map as the ramp is
 #endif

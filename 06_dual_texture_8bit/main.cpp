@@ -63,7 +63,7 @@ class DualTexture8bit final : public Lesson {
 
   void panel(Frame&) override {
     map_.precisionPanel();
-    ImGui::Text("pass 2 lit %lld fragments", lit_fragments_);
+    ImGui::Text("pass 2 lit %s fragments", countText(lit_fragments_).c_str());
   }
 
   void report(JsonWriter& json) const override { map_.report(json); }
@@ -101,7 +101,7 @@ class DualTexture8bit final : public Lesson {
   DepthReadback map_{1};
   ProgramVariants variants_;
   SamplesPassedQuery query_;
-  long long lit_fragments_ = 0;
+  std::optional<long long> lit_fragments_ = 0;  // empty: this context cannot count them
   BoolParam ramp_lookup_, dimmed_, lit_;
   FloatParam dimming_;
 };

@@ -69,7 +69,8 @@ class MultiDigit16bit final : public Lesson {
 
   void panel(Frame&) override {
     map_.precisionPanel();
-    ImGui::TextWrapped("lit by pass 2 %lld, by pass 3 %lld fragments", lit_[0], lit_[1]);
+    ImGui::TextWrapped("lit by pass 2 %s, by pass 3 %s fragments", countText(lit_[0]).c_str(),
+                       countText(lit_[1]).c_str());
   }
 
   void report(JsonWriter& json) const override { map_.report(json); }
@@ -119,7 +120,7 @@ class MultiDigit16bit final : public Lesson {
         dimming_());
   }
 
-  long long countLit(const Frame& f, const Program& program, int index) {
+  std::optional<long long> countLit(const Frame& f, const Program& program, int index) {
     queries_[index].begin();
     f.drawObjects(program, Objects::All);
     queries_[index].end();
@@ -136,7 +137,7 @@ class MultiDigit16bit final : public Lesson {
   ProgramVariants passes_, pass3_;
   Program digits_view_;
   SamplesPassedQuery queries_[2];
-  long long lit_[2] = {0, 0};
+  std::optional<long long> lit_[2] = {0, 0};  // empty: this context cannot count them
   BoolParam dimmed_, big_, little_, inset_;
   FloatParam dimming_;
 };

@@ -15,14 +15,14 @@
 in vec3 vWorld;
 in vec3 vNormal;
 uniform sampler2D uMap;       // Tex0: big digit in r, little digit in g
-uniform sampler1D uRampBig;   // Tex1 of pass 2
+uniform Ramp uRampBig;        // Tex1 of pass 2 (ramp.glsl: 1D, or 256x1)
 uniform sampler2D uRamp;      // Tex1 of pass 3
 uniform vec3 uColor;
 // Compiled per VIEW: the colour, the visibility, or which pass lit (1 grey, 2 green, 3 blue).
 out vec4 outColor;
 
 vec2 mapDigits() {
-  vec4 v = texture(uMap, mapCoord());
+  vec4 v = mapTexel(uMap);
   if (uMapIsDepth == 1) {
     float steps = depthToSteps(v.r, 65535.0, uReadbackNearest);
     return vec2(bigDigit(steps), littleDigit(steps));
@@ -51,7 +51,7 @@ void main() {
 #elif PASS == 1
   outColor = passColor(0.0, vec4(0.15, 0.15, 0.15, 1.0));
 #elif PASS == 2
-  float fragmentBig = floor(texture(uRampBig, rampS()).r * 255.0 + 0.5);
+  float fragmentBig = floor(rampTexel(uRampBig, rampS()) * 255.0 + 0.5);
   if (!(behindLight() || bigDigitPassLights(mapDigits(), vec2(fragmentBig, 0.0)))) discard;
   outColor = passColor(1.0, vec4(0.0, 0.8, 0.0, 0.0));
 #else

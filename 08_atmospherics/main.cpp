@@ -57,6 +57,7 @@ class Atmospherics final : public Lesson {
 
   void init() override {
     glGenVertexArrays(1, &empty_vao_);  // slices need no vertices: gl_VertexID, gl_InstanceID
+    rects_buffer_ = Buffer(GL_UNIFORM_BUFFER, 256 * sizeof(glm::vec4), nullptr, GL_DYNAMIC_DRAW);
     // Compiled per shadow.off (the baseline: no lookup), air.early_reject, air.jitter and the
     // view, on first use.
     room_ =
@@ -108,7 +109,7 @@ class Atmospherics final : public Lesson {
   void panel(Frame&) override {
     ImGui::Text("slices %d over view depth %.2f .. %.2f (%s)", slices_drawn_, near_, far_,
                 bound_() ? "the cone's" : "the whole view");
-    ImGui::Text("slice fragments passed %lld", passed_);
+    ImGui::Text("slice fragments passed %s", countText(passed_).c_str());
   }
 
   void report(JsonWriter& json) const override {
@@ -212,9 +213,11 @@ class Atmospherics final : public Lesson {
     // Fragments the slices rasterized (llvmpipe counts them before any test), and of those
     // the ones shaded: only those that passed the depth test when it runs first.
     if (const PassWork* work = f.measure.frameWork("air")) {
-      const long long shaded = early_reject_() ? passed_ : work->fragment_invocations;
+      const std::optional<long long> rasterized = work->fragment_invocations;
+      const std::optional<long long> shaded = early_reject_() ? passed_ : rasterized;
       f.measure.count("air_fragments_shaded", shaded);
-      f.measure.count("air_fragments_skipped", work->fragment_invocations - shaded);
+      f.measure.count("air_fragments_skipped",
+                      rasterized && shaded ? std::optional(*rasterized - *shaded) : std::nullopt);
     }
   }
 
@@ -227,7 +230,9 @@ class Atmospherics final : public Lesson {
     const Program& slices =
         slice_programs_.get({define("SHADOW_OFF", map_.off()), early_reject_.defines(),
                              jitter_.defines(), f.viewDefines()});
-    glProgramUniform4fv(slices.id(), slices.location("uRects"), slices_drawn_, &rects_[0][0]);
+    rects_buffer_.update(static_cast<GLsizeiptr>(rects_.size() * sizeof(glm::vec4)), rects_.data());
+    rects_buffer_.bindBase(0);
+    slices.bindBlock("Rects", 0);
     slices.set("uFar", far_);
     slices.set("uStep", step_);
     slices.set("uProjection", f.projection);
@@ -270,9 +275,10 @@ class Atmospherics final : public Lesson {
   GLuint empty_vao_ = 0;
   SamplesPassedQuery query_;
   std::vector<glm::vec4> rects_;  // per slice, back to front
+  Buffer rects_buffer_;           // their uniform block (slice.vert)
   int slices_drawn_ = 0;
   float near_ = 0.0f, far_ = 0.0f, step_ = 0.0f;
-  long long passed_ = 0;
+  std::optional<long long> passed_ = 0;  // empty: this context cannot count them
 };
 
 SHADOWS_LESSON(Atmospherics);

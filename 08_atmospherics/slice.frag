@@ -2,9 +2,9 @@
 // Steps 3 and 4 of the slide: each slice fragment adds the light the dust there scatters
 // toward the eye: density x spotlight texture x shadow-map test x the length of eye ray the
 // slice stands for. Additive blending: the air adds light and absorbs none.
-#if AIR_EARLY_REJECT
+#if AIR_EARLY_REJECT && HAS_EARLY_FRAGMENT_TESTS
 // Fragments behind the scene's surfaces fail the depth test before they are shaded (the
-// shader writes no depth).
+// shader writes no depth). GL 4.2: elsewhere the driver decides.
 layout(early_fragment_tests) in;
 #endif
 #include "spot.glsl"

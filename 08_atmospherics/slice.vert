@@ -2,7 +2,9 @@
 // Step 4 of the slide: slices facing the eye. One instance per slice, back to front; each a
 // quad over its own rectangle (normalized device x0, y0, x1, y1: where the slice's plane
 // cuts the lit cone, or the whole screen) at view depth uFar - (i + 0.5) * uStep.
-uniform vec4 uRects[256];
+layout(std140) uniform Rects {  // a uniform block: 256 vectors are more than ES 3.0 promises
+  vec4 uRects[256];
+};
 uniform float uFar;
 uniform float uStep;
 uniform mat4 uProjection;

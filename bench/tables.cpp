@@ -111,7 +111,9 @@ Table makeTable(const std::vector<const Config*>& configs,
     for (const auto& p : passes) {
       const auto it = r.work.find(p);
       row.push_back(it == r.work.end() ? "" : std::to_string(it->second.draw_calls));
-      row.push_back(it == r.work.end() ? "" : std::to_string(it->second.fragment_invocations));
+      row.push_back(it == r.work.end() || !it->second.fragment_invocations
+                        ? ""
+                        : std::to_string(*it->second.fragment_invocations));
     }
     for (const auto& name : counts) {
       const auto it = r.counts.find(name);

@@ -17,3 +17,18 @@ function(add_lesson name)
   target_link_libraries(${name} PRIVATE shadows_common shadows_main)
   set_property(GLOBAL APPEND PROPERTY SHADOWS_LESSONS ${name})
 endfunction()
+
+# The same lesson for an extra flavour (SHADOWS_EXTRA_FLAVOURS): its code against that
+# flavour's common/, the binary as build/<flavour>/<lesson>. No sweep: only the primary
+# flavour's benchmark runs them.
+function(add_flavour_lesson name flavour suffix)
+  add_library(${name}_lesson${suffix} OBJECT ${name}/main.cpp)
+  target_link_libraries(${name}_lesson${suffix} PUBLIC shadows_common${suffix})
+  target_compile_options(${name}_lesson${suffix} PRIVATE ${SHADOWS_WARNINGS})
+  target_compile_definitions(${name}_lesson${suffix}
+    PRIVATE LESSON_DIR="${CMAKE_SOURCE_DIR}/${name}" LESSON_NAME="${name}")
+  add_executable(${name}${suffix} $<TARGET_OBJECTS:${name}_lesson${suffix}>)
+  target_link_libraries(${name}${suffix} PRIVATE shadows_common${suffix} shadows_main${suffix})
+  set_target_properties(${name}${suffix} PROPERTIES OUTPUT_NAME ${name}
+                        RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/${flavour})
+endfunction()

@@ -186,7 +186,8 @@ Light Runner::currentLight() const {
 
 void Runner::initHeadless() {
   gpu_ = std::make_unique<Gpu>();
-  gpu_->context = createHeadlessContext(options_.backend);
+  gpu_->context = createHeadlessContext(options_.backend.empty() ? headlessBackends().front()
+                                                                 : options_.backend);
   initGl();
   if (options_.panel) {
     ImGui::CreateContext();
@@ -196,7 +197,7 @@ void Runner::initHeadless() {
 }
 
 void Runner::initImGuiGl() {
-  ImGui_ImplOpenGL3_Init("#version 330 core");
+  ImGui_ImplOpenGL3_Init(caps().es ? "#version 300 es" : "#version 330 core");
   // The font atlas read NEAREST: its glyphs land on whole pixels, so the panel looks the same
   // (headless panel pictures byte-identical) and costs a quarter less to draw on llvmpipe.
   ImGui_ImplOpenGL3_CreateDeviceObjects();
@@ -386,8 +387,9 @@ void Runner::showImage(const Frame& frame, const Image& image) {
 
 void Runner::resetGlState() {
   PassState{}.apply();
-  glDisable(GL_CLIP_DISTANCE0);
+#if !SHADOWS_GLES
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+#endif
 }
 
 Image Runner::readImage() const {

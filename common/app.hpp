@@ -129,7 +129,7 @@ std::vector<std::string> registeredLessons();
 struct RunOptions {
   bool headless = false;
   bool force_window = false;
-  std::string backend = "osmesa";
+  std::string backend;  // a headless context (headlessBackends()); empty: the build's default
   int width = 800, height = 600;
   int frames = 5;
   bool frames_given = false;  // --frames on the command line: a window run stops after them

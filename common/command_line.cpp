@@ -33,7 +33,9 @@ const char* kUsage =
     "  (no option)          a window with the ImGui panel if a display exists, else headless\n"
     "  --headless           render without a display (OSMesa) and write --out\n"
     "  --window             a window even when DISPLAY is unset (fails without a display)\n"
-    "  --backend NAME       headless context: osmesa (default) or egl (surfaceless)\n"
+    "  --backend NAME       headless context: osmesa (the default on desktop GL), egl\n"
+    "                       (surfaceless; the default on OpenGL ES) or glfw (a hidden\n"
+    "                       window: macOS)\n"
     "  --size WxH           image size (default 800x600)\n"
     "  --frames N           timed frames after one warm-up frame (default 5; in a window:\n"
     "                       render N frames, write the outputs asked for, exit)\n"
@@ -105,8 +107,14 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
     } else if (arg == "--help" || arg == "-h") {
       o.help = true;
     } else if (arg == "--backend") {
-      if (!args.value(value) || (value != "osmesa" && value != "egl")) {
-        return "--backend: expected osmesa or egl";
+      const std::vector<std::string> backends = headlessBackends();
+      if (!args.value(value) ||
+          std::find(backends.begin(), backends.end(), value) == backends.end()) {
+        std::string allowed;
+        for (size_t i = 0; i < backends.size(); ++i) {
+          allowed += (i == 0 ? "" : i + 1 == backends.size() ? " or " : ", ") + backends[i];
+        }
+        return "--backend: expected " + allowed;
       }
       o.backend = value;
     } else if (arg == "--size") {

@@ -50,8 +50,13 @@ void DepthReadback::declare(Params& p, bool linearChoice) {
 
 namespace {
 // Whether glReadPixels rounds a depth to the nearest step or down (the GL allows both): clear
-// a 1x1 depth buffer to 100.7 steps and read it back.
-bool driverReadbackRoundsToNearest(int digits, int depthBits) {
+// a 1x1 depth buffer to 100.7 steps and read it back. Where depth cannot be read back (OpenGL
+// ES) the conversion pass quantizes instead, and does what Mesa's glReadPixels does, on which
+// the goldens were made: bytes down, shorts to the nearest step.
+bool driverReadbackRoundsToNearest(int digits, [[maybe_unused]] int depthBits) {
+#if SHADOWS_GLES
+  return digits == 2;
+#else
   const Texture depth = Texture::depth(1, 1, depthBits);
   Framebuffer target;
   target.attachDepth(depth);
@@ -65,17 +70,46 @@ bool driverReadbackRoundsToNearest(int digits, int depthBits) {
                value);
   const int steps = digits == 1 ? reinterpret_cast<std::uint8_t*>(value)[0] : value[0];
   return steps == 101;
+#endif
+}
+
+// A 1x1 depth texture's value without reading depth back (OpenGL ES): a pass writes its float's
+// bits into a colour target (common/shaders/depth_bits.frag), and those are read.
+[[maybe_unused]] float depthThroughColour(const Texture& depth, const Program& bits) {
+  const Texture color = Texture::color(1, 1, GL_RGBA8);
+  Framebuffer target;
+  target.attachColor(color);
+  glViewport(0, 0, 1, 1);
+  PassState convert;
+  convert.depth_test = false;
+  convert.apply();
+  depth.bind(0);
+  bits.set("uDepth", 0);
+  GLuint vao = 0;
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  bits.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDeleteVertexArrays(1, &vao);
+  PassState{}.apply();
+  std::uint8_t bytes[4] = {0, 0, 0, 0};
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, bytes);
+  const std::uint32_t word =
+      bytes[0] | bytes[1] << 8 | bytes[2] << 16 | static_cast<std::uint32_t>(bytes[3]) << 24;
+  return std::bit_cast<float>(word);
 }
 // The size of one glPolygonOffset `unit` in window depth for a depth buffer of these bits:
 // "the smallest value guaranteed to produce a resolvable offset", whose size the GL leaves
 // to the driver (llvmpipe's is 2^-23 for 24 bits, twice 1 / (2^24 - 1)). Measured: a
-// triangle at depth 0.5, offset by 1000 units, into a 1x1 depth buffer.
-float driverOffsetUnit(int depthBits, const Program& flat) {
+// triangle at depth 0.5, offset by 1000 units, into a 1x1 depth buffer, read back (on OpenGL
+// ES through colour, depthThroughColour).
+float driverOffsetUnit(int depthBits, const Program& flat, [[maybe_unused]] const Program& bits) {
   const Texture depth = Texture::depth(1, 1, depthBits);
   Framebuffer target;
   target.attachDepth(depth);
   glViewport(0, 0, 1, 1);
-  glClearDepth(1.0);
+  glClearDepthf(1.0f);
   glClear(GL_DEPTH_BUFFER_BIT);
   PassState offset;
   offset.depth_func = GL_ALWAYS;
@@ -89,8 +123,12 @@ float driverOffsetUnit(int depthBits, const Program& flat) {
   glDrawArrays(GL_TRIANGLES, 0, 3);  // fullscreen.vert: z = 0, window depth 0.5
   glDeleteVertexArrays(1, &vao);
   PassState{}.apply();
+#if SHADOWS_GLES
+  const float value = depthThroughColour(depth, bits);
+#else
   float value = 0.5f;
   glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &value);
+#endif
   return std::max((value - 0.5f) / 1000.0f, 1e-12f);
 }
 
@@ -100,6 +138,13 @@ void DepthReadback::init() {
   const auto dir = commonShaderDir();
   light_program_ = Program(dir / "readback_light.vert", dir / "readback_light.frag");
   probe_program_ = Program(dir / "fullscreen.vert", dir / "depth_only.frag");
+  if (!caps().depth_readback) {
+    bits_program_ = Program(dir / "fullscreen.vert", dir / "depth_bits.frag");
+    digits_program_ = Program(dir / "fullscreen.vert", dir / "depth_to_digits.frag");
+    GLuint vao = 0;
+    glGenVertexArrays(1, &vao);
+    empty_vao_ = GlName<deleteVertexArray>(vao);
+  }
   if (digits_ == 1) {
     // 256 texels, texel i holding i (the last one step short: see rampSteps).
     std::vector<std::uint8_t> ramp(256);
@@ -148,11 +193,9 @@ bool DepthReadback::prepare(Frame& f) {
 void DepthReadback::recreate(glm::ivec2 size) {
   size_ = size;
   nearest_ = driverReadbackRoundsToNearest(digits_, depth_bits_);
-  offset_unit_ = driverOffsetUnit(depth_bits_, probe_program_);
+  offset_unit_ = driverOffsetUnit(depth_bits_, probe_program_, bits_program_);
   const glm::vec4 nothing_in_front(1.0f);  // outside the map: the cleared value, lit
   light_depth_ = Texture::depth(size.x, size.y, depth_bits_);
-  light_depth_.bind(0);
-  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE, &allocated_depth_bits_);
   light_target_ = std::make_unique<Framebuffer>();
   if (linear_) {
     light_color_ = Texture::color(size.x, size.y, GL_R8);
@@ -166,6 +209,20 @@ void DepthReadback::recreate(glm::ivec2 size) {
   }
   light_target_->attachDepth(light_depth_);
   light_target_->check();
+  glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                                        GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE,
+                                        &allocated_depth_bits_);
+  // No depth read back or copied on OpenGL ES: a pass writes the map's digits into a colour
+  // target, and that is read back or copied instead (common/shaders/depth_to_digits.frag).
+  digits_color_ = Texture();
+  digits_target_.reset();
+  if (throughColour() && path_ != "render_to_texture") {
+    digits_color_ = Texture::color(size.x, size.y, GL_RGBA8);
+    digits_color_.setFilter(GL_NEAREST);
+    digits_target_ = std::make_unique<Framebuffer>();
+    digits_target_->attachColor(digits_color_);
+    digits_target_->check();
+  }
 
   digits_texture_ = Texture();
   copied_ = Texture();
@@ -178,12 +235,17 @@ void DepthReadback::recreate(glm::ivec2 size) {
     digits_texture_.setBorder(nothing_in_front);
     if (digits_ == 1) {
       digits_texture_.setSwizzle(GL_RED, GL_RED, GL_RED, GL_ONE);
+    } else if (throughColour()) {
+      // The conversion pass wrote the big digit in r already.
     } else if constexpr (std::endian::native == std::endian::little) {
       // A 16-bit value's low byte comes first in memory: swap so r is the big digit.
       digits_texture_.setSwizzle(GL_GREEN, GL_RED, GL_ZERO, GL_ONE);
     }
   } else if (path_ == "copy_texture") {
-    if (linear_) {
+    if (throughColour()) {
+      copied_ = Texture::color(size.x, size.y, digits_ == 1 ? GL_R8 : GL_RG8);  // the digits
+      if (digits_ == 1) copied_.setSwizzle(GL_RED, GL_RED, GL_RED, GL_ONE);
+    } else if (linear_) {
       copied_ = Texture::color(size.x, size.y, GL_R8);
       copied_.setSwizzle(GL_RED, GL_RED, GL_RED, GL_ONE);
     } else {
@@ -232,9 +294,11 @@ void DepthReadback::transfer(Frame& f) {
   auto timing = f.measure.pass("readback");
   const int w = size_.x, h = size_.y;
   const auto texels = static_cast<size_t>(w) * static_cast<size_t>(h);
-  light_target_->bind();
+  if (throughColour()) writeDigits();  // OpenGL ES: the depth's digits into colour first
+  (throughColour() ? *digits_target_ : *light_target_).bind();
   if (path_ == "copy_texture") {
-    // Within the GPU: depth buffer to depth texture (or colour to colour, linear).
+    // Within the GPU: depth buffer to depth texture (or colour to colour: linear, and the
+    // digits on OpenGL ES).
     glBindTexture(GL_TEXTURE_2D, copied_.id());
     glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, w, h);
     f.measure.count("copied_texels", static_cast<long long>(texels));
@@ -242,6 +306,22 @@ void DepthReadback::transfer(Frame& f) {
   }
   // Through the CPU, as un-extended OpenGL had to: read back, then load into the texture.
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  if (!caps().depth_readback) {
+    // OpenGL ES reads colour as RGBA only: four bytes a texel, the digits in r and g.
+    std::vector<std::uint8_t> rgba(texels * 4);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    bytes_.resize(texels * static_cast<size_t>(digits_));
+    for (size_t i = 0; i < texels; ++i) {
+      for (size_t d = 0; d < static_cast<size_t>(digits_); ++d) {
+        bytes_[i * static_cast<size_t>(digits_) + d] = rgba[i * 4 + d];
+      }
+    }
+    digits_texture_.upload(digits_ == 1 ? GL_RED : GL_RG, GL_UNSIGNED_BYTE, bytes_.data());
+    if (digits_ == 2) bytes_.clear();  // lastBytes(): one digit only
+    f.measure.count("readback_bytes", static_cast<long long>(rgba.size()));
+    return;
+  }
   if (digits_ == 2) {
     shorts_.resize(texels);
     glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, shorts_.data());
@@ -275,6 +355,24 @@ float DepthReadback::texgenBias(const Frame& f) const {
   return step * std::max(glm::distance(f.light.position, f.light.target), 1e-3f);
 }
 
+void DepthReadback::writeDigits() const {
+  digits_target_->bind();
+  glViewport(0, 0, size_.x, size_.y);
+  PassState convert;
+  convert.depth_test = false;
+  convert.depth_write = false;
+  convert.apply();
+  light_depth_.bind(0);
+  digits_program_.set("uDepth", 0);
+  digits_program_.set("uDigits", digits_);
+  digits_program_.set("uReadbackNearest", nearest_ ? 1 : 0);
+  digits_program_.use();
+  glBindVertexArray(empty_vao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  countDrawCall();
+  PassState{}.apply();
+}
+
 const Texture& DepthReadback::lookupTexture() const {
   if (path_ == "read_pixels") return digits_texture_;
   if (path_ == "copy_texture") return copied_;
@@ -291,7 +389,7 @@ void DepthReadback::bindForLookup(const Frame& f, const Program& program) const 
     program.set("uRampBig", 2);
   }
   // Depth textures hold depth, not steps: the shader quantizes as glReadPixels would.
-  program.set("uMapIsDepth", !linear_ && path_ != "read_pixels" ? 1 : 0);
+  program.set("uMapIsDepth", mapIsDepth() ? 1 : 0);
   program.set("uReadbackNearest", nearest_ ? 1 : 0);
   program.set("uLinear", linear_ ? 1 : 0);
   program.set("uShadowMatrix", light_.textureMatrix());
@@ -318,9 +416,12 @@ bool DepthReadback::drawBasePass(Frame& f, const Program& program, bool color) c
 void DepthReadback::drawInset(const Frame& frame, bool fullscreen) const {
   if ((!inset_ || light_.off()) && !fullscreen) return;
   const Texture& map = lookupTexture();
-  if (!linear_ && path_ != "read_pixels") {
+  // OpenGL ES copied digits, not depth: the inset shows the depth they were made from.
+  const bool copied_digits = throughColour() && path_ == "copy_texture";
+  if (mapIsDepth() || copied_digits) {
     const LightFrustum& fr = light_.frustum();
-    frame.drawDepthInset(map, fr.near, fr.far, !fr.directional, fullscreen);
+    frame.drawDepthInset(copied_digits ? light_depth_ : map, fr.near, fr.far, !fr.directional,
+                         fullscreen);
   } else {
     frame.drawImageInset(map, fullscreen);
   }

@@ -80,6 +80,14 @@ class DepthReadback {
  private:
   void recreate(glm::ivec2 size);
   void transfer(Frame& frame);
+  // OpenGL ES reads and copies no depth: the projective map goes through colour there.
+  bool throughColour() const { return !caps().depth_readback && !linear_; }
+  void writeDigits() const;  // the light depth's digits into digits_color_
+  // Whether the eye pass reads depth (and quantizes it) rather than 8-bit digits.
+  bool mapIsDepth() const {
+    return !linear_ &&
+           (path_ == "render_to_texture" || (path_ == "copy_texture" && caps().depth_readback));
+  }
   glm::vec4 linearPlane() const;
   float texgenBias(const Frame& frame) const;
   const Texture& lookupTexture() const;
@@ -87,10 +95,14 @@ class DepthReadback {
   int digits_;
   LightView light_;
   Program light_program_, probe_program_;
+  Program bits_program_, digits_program_;  // OpenGL ES: depth through colour
+  GlName<deleteVertexArray> empty_vao_;
   Texture ramp_;                       // Tex1: 1D (one digit) or 2D (two digits) ramp
   Texture ramp_big_;                   // two digits: the 1D ramp of pass 2 (big digit only)
   Texture light_depth_, light_color_;  // what the light pass renders into
   std::unique_ptr<Framebuffer> light_target_;
+  Texture digits_color_;  // OpenGL ES: the map's digits, written from its depth
+  std::unique_ptr<Framebuffer> digits_target_;
   Texture digits_texture_;  // read_pixels: R8 or RG8 (big digit in r)
   Texture copied_;          // copy_texture: GL_DEPTH_COMPONENT24 (R8 for linear depth)
   std::vector<std::uint8_t> bytes_;

@@ -98,6 +98,9 @@ void Runner::drawImageInset(const Frame& frame, const Texture& image, bool fulls
   image.bind(0);
   gpu_->image.use();
   gpu_->image.set("uImage", 0);
+  gpu_->image.set("uHasBorder", image.border() ? 1 : 0);
+  gpu_->image.set("uBorder", image.border().value_or(glm::vec4(0.0f)));
+  gpu_->image.set("uLinear", image.filter() == GL_LINEAR ? 1 : 0);
   glBindVertexArray(gpu_->empty_vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   countDrawCall();

@@ -41,10 +41,13 @@ Sampler Sampler::depth(bool compare, GLenum filter) {
   glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
   glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, compare ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
   glSamplerParameteri(id, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-  glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-  glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+  const GLint wrap = caps().border_clamp ? GL_CLAMP_TO_BORDER : GL_CLAMP_TO_EDGE;
+  glSamplerParameteri(id, GL_TEXTURE_WRAP_S, wrap);
+  glSamplerParameteri(id, GL_TEXTURE_WRAP_T, wrap);
+#if !SHADOWS_GLES
   const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-  glSamplerParameterfv(id, GL_TEXTURE_BORDER_COLOR, border);
+  if (caps().border_clamp) glSamplerParameterfv(id, GL_TEXTURE_BORDER_COLOR, border);
+#endif
   return sampler;
 }
 
@@ -57,17 +60,46 @@ Texture Texture::depth(int width, int height, int bits) {
   glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internal), width, height, 0, GL_DEPTH_COMPONENT,
                type, nullptr);
   // Outside the map counts as "nothing in front": depth 1 at the border.
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-  const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-  glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+  t.setWrap(GL_CLAMP_TO_BORDER, GL_CLAMP_TO_BORDER);
+  t.setBorder(glm::vec4(1.0f));
   t.setFilter(GL_NEAREST);
   return t;
 }
 
+namespace {
+// Storage for one level of a 2D texture: immutable where the API has it (GL 4.2, ES 3.0), else
+// glTexImage2D with the format and type that go with the internal format (GL 4.1).
+void allocate2D(GLenum internalFormat, int width, int height) {
+#if SHADOWS_GL_VERSION >= 420 || SHADOWS_GLES
+  glTexStorage2D(GL_TEXTURE_2D, 1, internalFormat, width, height);
+#else
+  GLenum format = GL_RGBA, type = GL_UNSIGNED_BYTE;
+  switch (internalFormat) {
+    case GL_DEPTH24_STENCIL8:
+      format = GL_DEPTH_STENCIL, type = GL_UNSIGNED_INT_24_8;
+      break;
+    case GL_RGBA32F:
+      type = GL_FLOAT;
+      break;
+    case GL_R8:
+      format = GL_RED;
+      break;
+    case GL_RG8:
+      format = GL_RG;
+      break;
+    default:
+      break;
+  }
+  glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internalFormat), width, height, 0, format, type,
+               nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);  // complete with one level
+#endif
+}
+}  // namespace
+
 Texture Texture::depthStencil(int width, int height) {
   Texture t = create(GL_TEXTURE_2D, width, height);
-  glTexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH24_STENCIL8, width, height);
+  allocate2D(GL_DEPTH24_STENCIL8, width, height);
   return t;
 }
 
@@ -85,18 +117,29 @@ Texture Texture::create(GLenum target, int width, int height) {
 
 Texture Texture::color(int width, int height, GLenum internalFormat) {
   Texture t = create(GL_TEXTURE_2D, width, height);
-  glTexStorage2D(GL_TEXTURE_2D, 1, internalFormat, width, height);
+  allocate2D(internalFormat, width, height);
   t.setWrap(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
   t.setFilter(GL_LINEAR);
   return t;
 }
 
 Texture Texture::table1D(int width, GLenum internalFormat, GLenum format, const void* pixels) {
-  Texture t = create(GL_TEXTURE_1D, width, 1);
-  glTexStorage1D(GL_TEXTURE_1D, 1, internalFormat, width);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexSubImage1D(GL_TEXTURE_1D, 0, 0, width, format, GL_UNSIGNED_BYTE, pixels);
-  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+#if !SHADOWS_GLES
+  if (caps().texture_1d) {
+    Texture t = create(GL_TEXTURE_1D, width, 1);
+    glTexImage1D(GL_TEXTURE_1D, 0, static_cast<GLint>(internalFormat), width, 0, format,
+                 GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAX_LEVEL, 0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage1D(GL_TEXTURE_1D, 0, 0, width, format, GL_UNSIGNED_BYTE, pixels);
+    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    t.setFilter(GL_NEAREST);
+    return t;
+  }
+#endif
+  // No 1D textures (OpenGL ES): one row of a 2D texture holds the same texels.
+  Texture t = color(width, 1, internalFormat);
+  t.upload(format, GL_UNSIGNED_BYTE, pixels);
   t.setFilter(GL_NEAREST);
   return t;
 }
@@ -108,21 +151,31 @@ void Texture::upload(GLenum format, GLenum type, const void* pixels) const {
 }
 
 void Texture::setWrap(GLenum s, GLenum t) const {
+  const auto wrap = [](GLenum mode) {
+    return static_cast<GLint>(mode == GL_CLAMP_TO_BORDER && !caps().border_clamp ? GL_CLAMP_TO_EDGE
+                                                                                 : mode);
+  };
   glBindTexture(target_, name_.id());
-  glTexParameteri(target_, GL_TEXTURE_WRAP_S, static_cast<GLint>(s));
-  glTexParameteri(target_, GL_TEXTURE_WRAP_T, static_cast<GLint>(t));
+  glTexParameteri(target_, GL_TEXTURE_WRAP_S, wrap(s));
+  glTexParameteri(target_, GL_TEXTURE_WRAP_T, wrap(t));
 }
 
-void Texture::setBorder(const glm::vec4& color) const {
+void Texture::setBorder([[maybe_unused]] const glm::vec4& color) {
+  border_ = color;
+#if !SHADOWS_GLES
+  if (!caps().border_clamp) return;
   glBindTexture(target_, name_.id());
   glTexParameterfv(target_, GL_TEXTURE_BORDER_COLOR, &color[0]);
+#endif
 }
 
 void Texture::setSwizzle(GLenum r, GLenum g, GLenum b, GLenum a) const {
-  const GLint swizzle[4] = {static_cast<GLint>(r), static_cast<GLint>(g), static_cast<GLint>(b),
-                            static_cast<GLint>(a)};
+  // One channel at a time: GL_TEXTURE_SWIZZLE_RGBA is desktop only.
   glBindTexture(target_, name_.id());
-  glTexParameteriv(target_, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+  glTexParameteri(target_, GL_TEXTURE_SWIZZLE_R, static_cast<GLint>(r));
+  glTexParameteri(target_, GL_TEXTURE_SWIZZLE_G, static_cast<GLint>(g));
+  glTexParameteri(target_, GL_TEXTURE_SWIZZLE_B, static_cast<GLint>(b));
+  glTexParameteri(target_, GL_TEXTURE_SWIZZLE_A, static_cast<GLint>(a));
 }
 
 void Texture::bind(int unit) const {
@@ -130,7 +183,8 @@ void Texture::bind(int unit) const {
   glBindTexture(target_, name_.id());
 }
 
-void Texture::setFilter(GLenum minMag) const {
+void Texture::setFilter(GLenum minMag) {
+  filter_ = minMag;
   glBindTexture(target_, name_.id());
   glTexParameteri(target_, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(minMag));
   glTexParameteri(target_, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(minMag));
@@ -145,7 +199,48 @@ Buffer::Buffer(GLenum target, GLsizeiptr bytes, const void* data, GLenum usage)
   glBufferData(target, bytes, data, usage);
 }
 
+void Buffer::update(GLsizeiptr bytes, const void* data) const {
+  glBindBuffer(target_, name_.id());
+  glBufferSubData(target_, 0, bytes, data);
+}
+
+CounterBuffer::CounterBuffer([[maybe_unused]] int count) {
+#if SHADOWS_GL_VERSION >= 430 && !SHADOWS_GLES
+  if (!caps().storage_buffers) return;
+  count_ = count;
+  GLuint id = 0;
+  glGenBuffers(1, &id);
+  name_ = GlName<deleteBuffer>(id);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(count * sizeof(GLuint)), nullptr,
+               GL_DYNAMIC_READ);
+#endif
+}
+
+void CounterBuffer::zeroAndBind([[maybe_unused]] GLuint index) const {
+#if SHADOWS_GL_VERSION >= 430 && !SHADOWS_GLES
+  if (!name_) return;
+  const std::vector<GLuint> zero(static_cast<size_t>(count_), 0u);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, index, name_.id());
+  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0,
+                  static_cast<GLsizeiptr>(zero.size() * sizeof(GLuint)), zero.data());
+#endif
+}
+
+std::vector<GLuint> CounterBuffer::read() const {
+  std::vector<GLuint> counts(static_cast<size_t>(count_), 0u);
+#if SHADOWS_GL_VERSION >= 430 && !SHADOWS_GLES
+  if (!name_) return counts;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, name_.id());
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0,
+                     static_cast<GLsizeiptr>(counts.size() * sizeof(GLuint)), counts.data());
+#endif
+  return counts;
+}
+
 void SamplesPassedQuery::begin() {
+  if (!caps().samples_passed) return;
   if (!name_) {
     GLuint id = 0;
     glGenQueries(1, &id);
@@ -154,10 +249,19 @@ void SamplesPassedQuery::begin() {
   glBeginQuery(GL_SAMPLES_PASSED, name_.id());
 }
 
-long long SamplesPassedQuery::result() const {
-  GLuint64 samples = 0;
-  glGetQueryObjectui64v(name_.id(), GL_QUERY_RESULT, &samples);
-  return static_cast<long long>(samples);
+void SamplesPassedQuery::end() const {
+  if (caps().samples_passed) glEndQuery(GL_SAMPLES_PASSED);
+}
+
+std::optional<long long> SamplesPassedQuery::result() const {
+#if !SHADOWS_GLES
+  if (caps().samples_passed) {
+    GLuint64 samples = 0;
+    glGetQueryObjectui64v(name_.id(), GL_QUERY_RESULT, &samples);
+    return static_cast<long long>(samples);
+  }
+#endif
+  return std::nullopt;
 }
 
 void PassState::apply() const {
@@ -177,6 +281,9 @@ void PassState::apply() const {
   glStencilFunc(stencil_func, stencil_ref, 0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, stencil_pass);
   glStencilMask(0xFF);
+#if !SHADOWS_GLES
+  if (caps().clip_distance) set(GL_CLIP_DISTANCE0, clip_plane);
+#endif
 }
 
 void Texture::setCompare(bool compare) const {
@@ -197,7 +304,8 @@ void Framebuffer::attachDepth(const Texture& depth) {
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth.id(), 0);
   if (draw_buffers_.empty()) {
     // Depth only: no colour is written or read.
-    glDrawBuffer(GL_NONE);
+    const GLenum none = GL_NONE;
+    glDrawBuffers(1, &none);
     glReadBuffer(GL_NONE);
   }
 }
@@ -284,9 +392,14 @@ void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint, GLenum severi
 }  // namespace
 
 void GlErrorLog::install() {
+  if (!caps().debug_output) return;  // glGetError alone (poll)
   glEnable(GL_DEBUG_OUTPUT);
   glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+#if SHADOWS_GLES
+  glDebugMessageCallbackKHR(onDebugMessage, nullptr);
+#else
   glDebugMessageCallback(onDebugMessage, nullptr);
+#endif
 }
 
 int GlErrorLog::poll() {

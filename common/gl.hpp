@@ -2,16 +2,18 @@
 // #include and file:line errors, and the debug-output callback that counts GL errors.
 #pragma once
 
-#include <glad/gl.h>
+#include "gl_api.hpp"
 
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "caps.hpp"
 #include "scene.hpp"
 
 namespace shadows {
@@ -66,20 +68,28 @@ class Texture {
   // A colour texture: GL_RGBA8, GL_RGBA32F, GL_R8, ...
   static Texture color(int width, int height, GLenum internalFormat);
   // A 1D texture (GL_R8, GL_RG8, ...) filled from `pixels` (`format`, unsigned bytes), read
-  // NEAREST and clamped to its edge texels: a lookup table such as a ramp.
+  // NEAREST and clamped to its edge texels: a lookup table such as a ramp. Where there are no
+  // 1D textures (OpenGL ES) a width x 1 2D texture, the same texels (common/shaders/ramp.glsl
+  // reads either).
   static Texture table1D(int width, GLenum internalFormat, GLenum format, const void* pixels);
   // Replaces every texel of a 2D texture with `pixels` (tightly packed rows).
   void upload(GLenum format, GLenum type, const void* pixels) const;
   void bind(int unit) const;
-  void setFilter(GLenum minMag) const;
+  void setFilter(GLenum minMag);
+  // GL_CLAMP_TO_BORDER becomes GL_CLAMP_TO_EDGE where there is no border (Caps::border_clamp):
+  // the shaders then test their lookups themselves (common/shaders/border.glsl).
   void setWrap(GLenum s, GLenum t) const;
-  void setBorder(const glm::vec4& color) const;
+  void setBorder(const glm::vec4& color);
   // Which stored channel each of r, g, b, a reads (GL_RED, GL_GREEN, GL_ZERO, GL_ONE, ...).
   void setSwizzle(GLenum r, GLenum g, GLenum b, GLenum a) const;
   // Makes a depth texture a sampler2DShadow (GL_COMPARE_REF_TO_TEXTURE) or a plain one.
   void setCompare(bool compare) const;
   GLuint id() const { return name_.id(); }
   GLenum target() const { return target_; }
+  // The border colour setBorder gave it, and its filter: what a shader needs to emulate the
+  // border where the GL has none.
+  const std::optional<glm::vec4>& border() const { return border_; }
+  GLenum filter() const { return filter_; }
   int width() const { return width_; }
   int height() const { return height_; }
 
@@ -87,16 +97,20 @@ class Texture {
   static Texture create(GLenum target, int width, int height);
   GlName<deleteTexture> name_;
   GLenum target_ = GL_TEXTURE_2D;
+  GLenum filter_ = GL_NEAREST_MIPMAP_LINEAR;  // the GL's default
+  std::optional<glm::vec4> border_;
   int width_ = 0, height_ = 0;
 };
 
-// A buffer object (vertex data, a shader storage buffer, a pixel-pack buffer).
+// A buffer object (vertex data, a uniform block, a pixel-pack buffer).
 class Buffer {
  public:
   Buffer() = default;
   Buffer(GLenum target, GLsizeiptr bytes, const void* data, GLenum usage);
   void bind() const { glBindBuffer(target_, name_.id()); }
   void bindBase(GLuint index) const { glBindBufferBase(target_, index, name_.id()); }
+  // Replaces the first `bytes` of the buffer.
+  void update(GLsizeiptr bytes, const void* data) const;
   GLuint id() const { return name_.id(); }
   GLsizeiptr bytes() const { return bytes_; }
 
@@ -106,14 +120,29 @@ class Buffer {
   GLsizeiptr bytes_ = 0;
 };
 
+// Unsigned counters a fragment shader adds to with atomics (lesson 05's taps): a shader
+// storage buffer at binding `index`. Only where Caps::storage_buffers says so (GL 4.3).
+class CounterBuffer {
+ public:
+  CounterBuffer() = default;
+  explicit CounterBuffer(int count);
+  void zeroAndBind(GLuint index) const;
+  std::vector<GLuint> read() const;  // after the draws that count: waits for them
+
+ private:
+  GlName<deleteBuffer> name_;
+  int count_ = 0;
+};
+
 // How many samples passed every test (depth, stencil, discard) between begin() and end():
 // the fragments a pass really wrote, where fragment-shader invocations also count the
-// discarded ones.
+// discarded ones. OpenGL ES has only boolean occlusion queries: there begin() and end() do
+// nothing and result() is empty (the count is unavailable, never a wrong number).
 class SamplesPassedQuery {
  public:
   void begin();  // creates the query object the first time (a context is current by then)
-  void end() const { glEndQuery(GL_SAMPLES_PASSED); }
-  long long result() const;  // waits for the GPU
+  void end() const;
+  std::optional<long long> result() const;  // waits for the GPU
 
  private:
   GlName<deleteQuery> name_;
@@ -137,6 +166,9 @@ struct PassState {
   GLenum stencil_func = GL_ALWAYS;
   GLint stencil_ref = 0;
   GLenum stencil_pass = GL_KEEP;  // what a fragment that passes depth and stencil writes
+  // User clip plane 0 (gl_ClipDistance[0]; on OpenGL ES the shader discards instead,
+  // common/shaders/clip_distance.glsl, and this changes nothing).
+  bool clip_plane = false;
   void apply() const;
 };
 
@@ -182,7 +214,8 @@ class Mesh {
   GLsizei index_count_ = 0;
 };
 
-// Counts GL errors reported through KHR_debug, and glGetError as a backstop.
+// Counts GL errors reported through KHR_debug (where the context has it, Caps::debug_output),
+// and glGetError as a backstop.
 class GlErrorLog {
  public:
   static void install();  // call once per context, after loading GL

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,13 @@ class JsonWriter {
     return *this;
   }
   JsonWriter& value(const std::string& key, const char* v) { return value(key, std::string(v)); }
+  // A number this context cannot count (Caps): null, never a wrong number.
+  JsonWriter& value(const std::string& key, const std::optional<long long>& v) {
+    if (v) return value(key, *v);
+    item(key);
+    out_ += "null";
+    return *this;
+  }
   const std::string& str() const { return out_; }
 
   // A JSON string. Bytes that are not UTF-8 (a file name in another encoding) cannot be

@@ -19,6 +19,10 @@ long long drawCallsSoFar() {
   return g_draw_calls;
 }
 
+std::string countText(const std::optional<long long>& count) {
+  return count ? std::to_string(*count) : caps().unavailable();
+}
+
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
   const size_t mid = values.size() / 2;
@@ -41,6 +45,7 @@ Measure::Measure() {
 void Measure::beginFrame() {
   work_.clear();
   counts_.clear();
+  unavailable_.clear();
   variants_.clear();
   if (!enabled_) return;
   glFinish();
@@ -53,6 +58,7 @@ void Measure::endFrame() {
   frame_ms_.push_back(msSince(frame_start_));
   last_work_ = work_;
   last_counts_ = counts_;
+  last_unavailable_ = unavailable_;
   last_variants_ = variants_;
 }
 
@@ -61,31 +67,63 @@ Measure::Pass::Pass(Measure* owner, std::string name, bool countPassed)
   if (owner_ == nullptr) return;
   glFinish();
   draws_at_start_ = drawCallsSoFar();
-  glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, owner_->query_.id());
-  if (count_passed_) glBeginQuery(GL_SAMPLES_PASSED, owner_->passed_query_.id());
+#if !SHADOWS_GLES
+  if (caps().pipeline_statistics) {
+    glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, owner_->query_.id());
+  }
+#endif
+  if (count_passed_ && caps().samples_passed) {
+    glBeginQuery(GL_SAMPLES_PASSED, owner_->passed_query_.id());
+  }
   start_ = std::chrono::steady_clock::now();
 }
 
+namespace {
+// The result of a query that has ended (waits for it). Desktop GL only: ES never starts one.
+long long queryResult([[maybe_unused]] GLuint query) {
+  GLuint64 value = 0;
+#if !SHADOWS_GLES
+  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &value);
+#endif
+  return static_cast<long long>(value);
+}
+}  // namespace
+
 Measure::Pass::~Pass() {
   if (owner_ == nullptr) return;
-  glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
-  if (count_passed_) glEndQuery(GL_SAMPLES_PASSED);
+  const Caps& c = caps();
+#if !SHADOWS_GLES
+  if (c.pipeline_statistics) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+#endif
+  if (count_passed_ && c.samples_passed) glEndQuery(GL_SAMPLES_PASSED);
   glFinish();
   owner_->pass_ms_[name_].push_back(msSince(start_));
-  GLuint64 fragments = 0;
-  glGetQueryObjectui64v(owner_->query_.id(), GL_QUERY_RESULT, &fragments);
   PassWork& work = owner_->work_[name_];
   work.draw_calls += drawCallsSoFar() - draws_at_start_;
-  work.fragment_invocations += static_cast<long long>(fragments);
+  if (c.pipeline_statistics) {
+    work.fragment_invocations =
+        work.fragment_invocations.value_or(0) + queryResult(owner_->query_.id());
+  }
   if (count_passed_) {
-    GLuint64 passed = 0;
-    glGetQueryObjectui64v(owner_->passed_query_.id(), GL_QUERY_RESULT, &passed);
-    work.fragments_passed = std::max(work.fragments_passed, 0LL) + static_cast<long long>(passed);
+    work.counts_passed = true;
+    if (c.samples_passed) {
+      work.fragments_passed =
+          work.fragments_passed.value_or(0) + queryResult(owner_->passed_query_.id());
+    }
   }
 }
 
 void Measure::count(const std::string& name, long long amount) {
   if (enabled_) counts_[name] += amount;
+}
+
+void Measure::count(const std::string& name, std::optional<long long> amount) {
+  if (!enabled_) return;
+  if (amount) {
+    counts_[name] += *amount;
+  } else {
+    unavailable_.insert(name);
+  }
 }
 
 void Measure::clearHistory() {

@@ -5,6 +5,8 @@
 
 #include <chrono>
 #include <map>
+#include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -15,10 +17,13 @@ namespace shadows {
 struct PassWork {
   long long draw_calls = 0;
   // llvmpipe counts every rasterized fragment here, before the depth test, early or not.
-  long long fragment_invocations = 0;
-  // GL_SAMPLES_PASSED, for passes that ask (-1 otherwise): the fragments that passed the depth
-  // test; with the tests early, the only ones whose shading ran.
-  long long fragments_passed = -1;
+  // Empty where the context cannot count them (Caps::pipeline_statistics).
+  std::optional<long long> fragment_invocations;
+  // GL_SAMPLES_PASSED, for passes that ask: the fragments that passed the depth test; with
+  // the tests early, the only ones whose shading ran. Empty where the context has no counting
+  // occlusion queries (OpenGL ES).
+  bool counts_passed = false;
+  std::optional<long long> fragments_passed;
 };
 
 // Every draw the lessons issue goes through here, so passes can count them.
@@ -54,8 +59,10 @@ class Measure {
     return Pass(enabled_ ? this : nullptr, name, countPassed);
   }
 
-  // An event counter for this frame, e.g. "shadow_map_renders".
+  // An event counter for this frame, e.g. "shadow_map_renders". An empty amount is a number
+  // this context cannot count: the report says null, "unavailable on <flavour>".
   void count(const std::string& name, long long amount = 1);
+  void count(const std::string& name, std::optional<long long> amount);
 
   // Drop everything recorded so far (after the warm-up frame).
   void clearHistory();
@@ -70,6 +77,8 @@ class Measure {
     return enabled_ && it != work_.end() ? &it->second : nullptr;
   }
   const std::map<std::string, long long>& lastFrameCounts() const { return last_counts_; }
+  // The counters of the last frame this context could not count (pass work included).
+  const std::set<std::string>& lastFrameUnavailable() const { return last_unavailable_; }
   // The shader variants the frame ran (ProgramVariants::takeUsed), kept like the counts.
   void variants(std::vector<std::string> used) { variants_ = std::move(used); }
   const std::vector<std::string>& lastFrameVariants() const { return last_variants_; }
@@ -83,9 +92,12 @@ class Measure {
   std::map<std::string, std::vector<double>> pass_ms_;
   std::map<std::string, PassWork> work_, last_work_;
   std::map<std::string, long long> counts_, last_counts_;
+  std::set<std::string> unavailable_, last_unavailable_;
   std::vector<std::string> variants_, last_variants_;
 };
 
 double median(std::vector<double> values);
+// A count as the panel says it: the number, or "unavailable on <flavour>".
+std::string countText(const std::optional<long long>& count);
 
 }  // namespace shadows

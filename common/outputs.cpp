@@ -20,6 +20,7 @@
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <map>
+#include <set>
 
 namespace shadows {
 
@@ -27,6 +28,7 @@ void Runner::writeReport(JsonWriter& json) {
   json.beginObject();
   json.value("lesson", name_);
   json.value("renderer", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+  json.value("flavour", caps().flavour);  // the API this build speaks: gl45, gl41 or gles30
   json.value("backend", window_ ? std::string("window") : HeadlessContext::current());
   json.beginArray("size");
   json.value("", options_.width);
@@ -43,16 +45,28 @@ void Runner::writeReport(JsonWriter& json) {
   json.beginObject("pass_ms");
   for (const auto& [pass, ms] : measure_->medianPassMs()) json.value(pass, ms);
   json.endObject();
+  // Counters this context cannot count are null, and "unavailable" says so, once per name.
+  std::set<std::string> unavailable = measure_->lastFrameUnavailable();
   json.beginObject("counters");
   for (const auto& [pass, work] : measure_->lastFrameWork()) {
     json.beginObject(pass);
     json.value("draw_calls", work.draw_calls);
     json.value("fragment_invocations", work.fragment_invocations);
-    if (work.fragments_passed >= 0) json.value("fragments_passed", work.fragments_passed);
+    if (!work.fragment_invocations) unavailable.insert("fragment_invocations");
+    if (work.counts_passed) json.value("fragments_passed", work.fragments_passed);
+    if (work.counts_passed && !work.fragments_passed) unavailable.insert("fragments_passed");
     json.endObject();
   }
   for (const auto& [name, count] : measure_->lastFrameCounts()) json.value(name, count);
+  for (const std::string& name : measure_->lastFrameUnavailable()) {
+    json.value(name, std::optional<long long>());
+  }
   json.endObject();
+  if (!unavailable.empty()) {
+    json.beginObject("unavailable");
+    for (const std::string& name : unavailable) json.value(name, caps().unavailable());
+    json.endObject();
+  }
   json.value("gl_errors", glErrors());
   // Which compiled variant each pass ran, and how many programs this run compiled.
   json.beginArray("shader_variants");

@@ -170,12 +170,19 @@ void Runner::drawPanel(Frame& frame) {
         ImGui::Text("  %-8s skipped this frame", pass.c_str());
       } else {
         ImGui::Text("  %-8s %6.2f ms %2lld draws", pass.c_str(), ms, it->second.draw_calls);
-        ImGui::TextDisabled("           %lld fragments", it->second.fragment_invocations);
+        if (it->second.fragment_invocations) {
+          ImGui::TextDisabled("           %lld fragments", *it->second.fragment_invocations);
+        } else {
+          ImGui::TextDisabled("           fragments %s", caps().unavailable().c_str());
+        }
       }
     }
     std::string counts;
     for (const auto& [name, count] : measure_->lastFrameCounts()) {
       counts += (counts.empty() ? "" : ", ") + name + " " + std::to_string(count);
+    }
+    for (const std::string& name : measure_->lastFrameUnavailable()) {
+      counts += (counts.empty() ? "" : ", ") + name + " " + caps().unavailable();
     }
     ImGui::TextWrapped("%s", counts.c_str());
   }

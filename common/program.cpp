@@ -1,6 +1,7 @@
 // Shader programs from files: #include resolved, compile errors as file:line, variants
 // selected by #defines and compiled on first use.
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <glm/gtc/type_ptr.hpp>
 #include <regex>
@@ -56,16 +57,43 @@ void appendWithIncludes(const std::filesystem::path& file, ShaderSource& out, in
   }
 }
 
+}  // namespace
+
+std::string versionLines(const std::string& fileVersion, const Caps& c) {
+  // A file states the desktop GLSL it was written for ("#version 430 core"); what it needs
+  // beyond 4.1 it asks for under HAS_* (Caps::shaderDefines).
+  if (c.es) {
+    // No default precision for floats in ES fragment shaders, nor for sampler2DShadow:
+    // everything highp, as desktop GLSL computes it.
+    return "#version 300 es\n"
+           "precision highp float;\nprecision highp int;\n"
+           "precision highp sampler2D;\nprecision highp sampler2DShadow;\n";
+  }
+  int number = 330;
+  std::sscanf(fileVersion.c_str(), " #version %d", &number);
+  if (number > c.glsl_version) return "#version " + std::to_string(c.glsl_version) + " core\n";
+  return fileVersion + "\n";
+}
+
+namespace {
+
 GLuint compile(GLenum stage, const std::filesystem::path& file,
                const std::vector<std::string>& defines) {
   ShaderSource src = preprocessShader(file);
-  // The variant's defines go right after #version (whose #line directive follows them, so
-  // error lines still name the file's own lines).
-  std::string define_lines;
-  for (const std::string& d : defines) define_lines += "#define " + d + "\n";
+  // The version line as this context takes it, then the context's HAS_* and the variant's
+  // defines (the #line directive after them keeps error lines the file's own).
+  std::string head;
+  for (const std::string& d : caps().shaderDefines()) head += "#define " + d + "\n";
+  for (const std::string& d : defines) head += "#define " + d + "\n";
   const size_t version = src.text.find("#version");
-  const size_t after = version == std::string::npos ? 0 : src.text.find('\n', version) + 1;
-  src.text.insert(after, define_lines);
+  if (version == std::string::npos) {
+    head = versionLines("#version 330 core", caps()) + head;
+    src.text.insert(0, head);
+  } else {
+    const size_t end = src.text.find('\n', version);
+    head = versionLines(src.text.substr(version, end - version), caps()) + head;
+    src.text.replace(version, end + 1 - version, head);
+  }
   const GLuint shader = glCreateShader(stage);
   const char* text = src.text.c_str();
   glShaderSource(shader, 1, &text, nullptr);
@@ -192,23 +220,63 @@ GLint Program::location(const std::string& name) const {
   return loc;
 }
 
+// glProgramUniform* on desktop GL (4.1 has it). OpenGL ES 3.0 sets uniforms only on the
+// program in use: there it is bound for the call and the one in use put back.
+#if SHADOWS_GLES
+namespace {
+class InUse {
+ public:
+  explicit InUse(GLuint program) : program_(program) {
+    GLint current = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    previous_ = static_cast<GLuint>(current);
+    if (previous_ != program_) glUseProgram(program_);
+  }
+  ~InUse() {
+    if (previous_ != program_) glUseProgram(previous_);
+  }
+  InUse(const InUse&) = delete;
+  InUse& operator=(const InUse&) = delete;
+
+ private:
+  GLuint program_, previous_ = 0;
+};
+}  // namespace
+#define SHADOWS_SET(call, ...)             \
+  do {                                     \
+    const InUse in_use(name_.id());        \
+    gl##call(location(name), __VA_ARGS__); \
+  } while (false)
+#else
+#define SHADOWS_SET(call, ...) glProgram##call(name_.id(), location(name), __VA_ARGS__)
+#endif
+
 void Program::set(const std::string& name, int v) const {
-  glProgramUniform1i(name_.id(), location(name), v);
+  SHADOWS_SET(Uniform1i, v);
 }
 void Program::set(const std::string& name, float v) const {
-  glProgramUniform1f(name_.id(), location(name), v);
+  SHADOWS_SET(Uniform1f, v);
 }
 void Program::set(const std::string& name, const glm::vec2& v) const {
-  glProgramUniform2fv(name_.id(), location(name), 1, glm::value_ptr(v));
+  SHADOWS_SET(Uniform2fv, 1, glm::value_ptr(v));
 }
 void Program::set(const std::string& name, const glm::vec3& v) const {
-  glProgramUniform3fv(name_.id(), location(name), 1, glm::value_ptr(v));
+  SHADOWS_SET(Uniform3fv, 1, glm::value_ptr(v));
 }
 void Program::set(const std::string& name, const glm::vec4& v) const {
-  glProgramUniform4fv(name_.id(), location(name), 1, glm::value_ptr(v));
+  SHADOWS_SET(Uniform4fv, 1, glm::value_ptr(v));
 }
 void Program::set(const std::string& name, const glm::mat4& v) const {
-  glProgramUniformMatrix4fv(name_.id(), location(name), 1, GL_FALSE, glm::value_ptr(v));
+  SHADOWS_SET(UniformMatrix4fv, 1, GL_FALSE, glm::value_ptr(v));
+}
+void Program::set(const std::string& name, const std::vector<glm::vec2>& v) const {
+  if (v.empty()) return;
+  SHADOWS_SET(Uniform2fv, static_cast<GLsizei>(v.size()), glm::value_ptr(v[0]));
+}
+
+void Program::bindBlock(const std::string& block, GLuint binding) const {
+  const GLuint index = glGetUniformBlockIndex(name_.id(), block.c_str());
+  if (index != GL_INVALID_INDEX) glUniformBlockBinding(name_.id(), index, binding);
 }
 
 }  // namespace shadows

@@ -29,6 +29,9 @@ class Program {
   void set(const std::string& name, const glm::vec3& v) const;
   void set(const std::string& name, const glm::vec4& v) const;
   void set(const std::string& name, const glm::mat4& v) const;
+  void set(const std::string& name, const std::vector<glm::vec2>& v) const;  // an array
+  // Binds the uniform block `block` to the buffer binding point `binding`.
+  void bindBlock(const std::string& block, GLuint binding) const;
   GLuint id() const { return name_.id(); }
 
  private:
@@ -73,5 +76,9 @@ ShaderSource preprocessShader(const std::filesystem::path& file);
 // Rewrites "0:12(5): error" style compiler messages into "file.frag:12: error".
 std::string mapShaderLog(const std::string& log, const std::vector<std::string>& files);
 std::filesystem::path commonShaderDir();
+// The lines that replace a file's "#version 430 core" on this context: the same where the API
+// has that version, "#version 410 core" on a 4.1 build, "#version 300 es" and precision lines
+// on OpenGL ES.
+std::string versionLines(const std::string& fileVersion, const Caps& caps);
 
 }  // namespace shadows

@@ -66,6 +66,11 @@ struct Runner::Gpu {
     target->attachColor(target_color);
     target->attachDepthStencil(target_depth);
     target->check();
+    // The truth reads positions and normals back in float: OpenGL ES renders float colour only
+    // with EXT_color_buffer_float (which WebGL 2 offers too).
+    if (!caps().float_color_targets) {
+      throw GlFailure("no float colour targets (EXT_color_buffer_float) for the truth's passes");
+    }
     surface_position = Texture::color(w, h, GL_RGBA32F);
     surface_normal = Texture::color(w, h, GL_RGBA32F);
     surface_depth = Texture::depthStencil(w, h);

@@ -37,14 +37,11 @@ int Runner::runWindow() {
   });
   if (!glfwInit()) return kNoWindow;
   window_ = true;
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_STENCIL_BITS, 8);
+  setGlfwContextHints();
   GLFWwindow* window = glfwCreateWindow(
       options_.width, options_.height, (name_ + ": " + lesson_->title()).c_str(), nullptr, nullptr);
   if (window == nullptr) {
-    if (window_error_.empty()) window_error_ = "no 4.5 core context";
+    if (window_error_.empty()) window_error_ = std::string("no ") + (contextName() + 2);
     glfwTerminate();
     window_ = false;
     return kNoWindow;
@@ -52,7 +49,7 @@ int Runner::runWindow() {
   opening_error = nullptr;
   glfwMakeContextCurrent(window);
   glfwSwapInterval(1);
-  if (gladLoadGL(glfwGetProcAddress) == 0) throw GlFailure("glad could not load GL");
+  if (!loadGl(glfwGetProcAddress)) throw GlFailure("glad could not load GL");
   gpu_ = std::make_unique<Gpu>();
   gpu_->window = window;
   initGl();
@@ -69,6 +66,20 @@ int Runner::runWindow() {
   glfwSetKeyCallback(window, [](GLFWwindow* w, int, int, int, int) { input(w); });
   glfwSetCharCallback(window, [](GLFWwindow* w, unsigned int) { input(w); });
   ImGui_ImplGlfw_InitForOpenGL(window, true);
+  // A Retina display (macOS) has two framebuffer pixels per window unit: the panel's font is
+  // rasterized at that size and drawn at 1/scale, sharp there rather than doubled.
+  int framebuffer_width = 0, window_width = 0, unused_height = 0;
+  glfwGetFramebufferSize(window, &framebuffer_width, &unused_height);
+  glfwGetWindowSize(window, &window_width, &unused_height);
+  const float scale = window_width > 0
+                          ? static_cast<float>(framebuffer_width) / static_cast<float>(window_width)
+                          : 1.0f;
+  if (scale > 1.0f) {
+    ImFontConfig font;
+    font.SizePixels = 13.0f * scale;
+    ImGui::GetIO().Fonts->AddFontDefault(&font);
+    ImGui::GetIO().FontGlobalScale = 1.0f / scale;
+  }
   initImGuiGl();
   gpu_->imgui_glfw = true;
 

@@ -26,7 +26,7 @@ TEST(Overdraw, EyePassesShadeAtMostOneAndAHalfTenthsMoreThanTheCoveredPixels) {
       const PassWork& work = runner->measure().lastFrameWork().at(pass);
       const ErrorMetrics& e = runner->measureError().metrics;
       ASSERT_GT(e.covered_pixels, 0) << lesson << " " << scene;
-      const double passed = static_cast<double>(work.fragments_passed);
+      const double passed = static_cast<double>(work.fragments_passed.value_or(-1));
       EXPECT_LE(passed, 1.15 * static_cast<double>(e.covered_pixels)) << lesson << " " << scene;
       // Every covered pixel is shaded at least once.
       EXPECT_GE(passed, static_cast<double>(e.covered_pixels)) << lesson << " " << scene;

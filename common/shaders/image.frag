@@ -1,5 +1,15 @@
 #version 330 core
+// A picture over the target or in a corner, with its border where it has one (border.glsl).
+#include "border.glsl"
 in vec2 vUv;
 uniform sampler2D uImage;
+uniform int uHasBorder;
+uniform vec4 uBorder;
+uniform int uLinear;
 out vec4 outColor;
-void main() { outColor = texture(uImage, vUv); }
+void main() {
+  outColor = texture(uImage, vUv);
+  if (uHasBorder == 1) {
+    outColor = withBorder(outColor, vUv, vec2(textureSize(uImage, 0)), uBorder, uLinear == 1);
+  }
+}

@@ -3,9 +3,10 @@
 // (000, "Improving Depth Map Precision"): "lookup S in identity 1D intensity texture, write
 // texture result into color frame buffer, still using standard depth testing". glPolygonOffset
 // does not reach colour, so the same slope-scaled offset is added to S here.
+#include "ramp.glsl"
 in float vS;
 uniform int uLinear;
-uniform sampler1D uRamp;
+uniform Ramp uRamp;
 uniform float uOffsetFactor;  // glPolygonOffset's factor
 uniform float uOffsetSteps;   // and its units, in 8-bit steps
 out vec4 outColor;
@@ -16,5 +17,5 @@ void main() {
   }
   float slope = max(abs(dFdx(vS)), abs(dFdy(vS)));
   float s = vS + uOffsetFactor * slope + uOffsetSteps / 255.0;
-  outColor = vec4(texture(uRamp, s).r);
+  outColor = vec4(rampTexel(uRamp, s));
 }

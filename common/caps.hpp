@@ -1,0 +1,40 @@
+// What the current context can do, asked once when it is made (loadGl) and read by the code
+// that needs it: the flavour's API sets the ceiling (a gl41 build never uses what 4.2 added),
+// the context's extensions what is there below it. Where a feature is missing the code
+// emulates it (see README, "One source, three APIs") or reports the number as unavailable.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace shadows {
+
+struct Caps {
+  std::string flavour;     // the build's API: "gl45", "gl41" or "gles30"
+  bool es = false;         // OpenGL ES: `#version 300 es` shaders with precision lines
+  int glsl_version = 330;  // what Program writes where a file asks for more (410, 300 es)
+
+  // Counters. Without them the report says null, "unavailable on <flavour>".
+  bool pipeline_statistics = false;  // fragment_invocations (ARB_pipeline_statistics_query)
+  bool samples_passed = false;       // counting occlusion queries (ES has only boolean ones)
+  bool storage_buffers = false;      // SSBOs and atomics (05's tap counters): GL 4.3
+  bool debug_output = false;         // KHR_debug; else GL errors come from glGetError only
+
+  // Features with an emulation where they are missing.
+  bool texture_1d = false;            // else ramps are 256x1 2D textures
+  bool border_clamp = false;          // else edge clamp, the shader tests the lookup
+  bool clip_distance = false;         // else a varying and discard
+  bool depth_readback = false;        // glReadPixels and copies of depth; else via colour
+  bool early_fragment_tests = false;  // layout(early_fragment_tests): GL 4.2; else the driver's
+  bool float_color_targets = false;   // RGBA32F colour attachments (the truth's read backs)
+
+  // "unavailable on gles30": what a report or panel says for a number this context lacks.
+  std::string unavailable() const { return "unavailable on " + flavour; }
+  // The shader #defines Program adds to every stage: HAS_TEXTURE_1D 1, ...
+  std::vector<std::string> shaderDefines() const;
+};
+
+// The caps of the current context (loadGl fills them; before that, the build's ceiling).
+const Caps& caps();
+
+}  // namespace shadows

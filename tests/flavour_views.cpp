@@ -1,0 +1,188 @@
+// One lesson on this build's GL API (gl45, gl41 or gles30), headless at the goldens' size with
+// its defaults: every view as a picture and the report of the shaded view, into a directory.
+// With --reference (gl45's directory for the same lesson) it also checks what issue 23 asks of
+// a flavour: no GL error in any view, every picture within the golden tolerance of gl45's, the
+// error numbers within 0.02 points, and every counter either gl45's number or null and said
+// to be unavailable. Exit 0 when all hold, 1 (with one line per failure) when not.
+//
+//   flavour_views LESSON OUT_DIR [--reference REF_DIR] [--levels N] [--set name=value ...]
+//
+// --levels N: a pixel counts as moved only when a channel differs by more than N levels (0 by
+// default, as for the goldens). Only lesson 02 on gles30 takes 1 (tests/CMakeLists.txt: why).
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "app.hpp"
+#include "image.hpp"
+#include "json.hpp"
+
+namespace {
+
+using shadows::Image;
+using Json = nlohmann::json;
+
+int g_failures = 0;
+
+void fail(const std::string& what) {
+  std::printf("FAIL %s\n", what.c_str());
+  ++g_failures;
+}
+
+// Pixels whose largest colour difference is above `levels` (0: harness.hpp's golden comparison).
+size_t pixelsDiffering(const Image& a, const Image& b, int levels) {
+  if (a.width != b.width || a.height != b.height) return a.rgba.size() / 4 + 1;
+  size_t differing = 0;
+  for (size_t i = 0; i < a.rgba.size(); i += 4) {
+    for (size_t c = 0; c < 3; ++c) {
+      if (std::abs(a.rgba[i + c] - b.rgba[i + c]) > levels) {
+        ++differing;
+        break;
+      }
+    }
+  }
+  return differing;
+}
+
+// The golden tolerance (tests/harness.hpp, kGoldenMovedPixels).
+constexpr size_t kMovedPixels = 16;
+
+// Counters an emulation changes on purpose, with why: they are compared only for presence.
+const std::set<std::string> kEmulated = {
+    "counters/readback_bytes",       // OpenGL ES reads the map's digits as RGBA: 4 bytes a texel
+    "counters/readback/draw_calls",  // ... after a pass that writes them into colour
+};
+
+Json readJson(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  return Json::parse(in, nullptr, false);
+}
+
+// Every counter of the reference is here: equal, or null and named in "unavailable".
+void compareCounters(const Json& ref, const Json& own, const Json& unavailable,
+                     const std::string& flavour, const std::string& where) {
+  for (const auto& [name, value] : ref.items()) {
+    const std::string at = where + "/" + name;
+    if (!own.contains(name)) {
+      fail(at + ": missing");
+    } else if (value.is_object()) {
+      compareCounters(value, own.at(name), unavailable, flavour, at);
+    } else if (own.at(name).is_null()) {
+      const bool said =
+          unavailable.contains(name) && unavailable.at(name) == "unavailable on " + flavour;
+      if (!said) fail(at + ": null, but \"unavailable\" does not say it");
+    } else if (value != own.at(name) && kEmulated.count(at) == 0) {
+      fail(at + ": " + own.at(name).dump() + ", gl45 " + value.dump());
+    }
+  }
+}
+
+void compareReports(const Json& ref, const Json& own) {
+  const std::string flavour = own.value("flavour", "?");
+  if (own.value("gl_errors", -1) != 0) fail("report: gl_errors " + own["gl_errors"].dump());
+  const Json& e = own["error"];
+  const Json& r = ref["error"];
+  if (!e.is_object() || !r.is_object()) return fail("report: no error block");
+  if (e["truth"] != r["truth"])
+    fail("error/truth " + e["truth"].dump() + ", gl45 " + r["truth"].dump());
+  // "Within 0.02 points": percentages directly, mean errors as percentages of full scale.
+  const std::pair<const char*, double> numbers[] = {
+      {"false_shadow_pct", 0.02}, {"false_lit_pct", 0.02}, {"vis_mae", 2e-4},
+      {"shade_mae", 2e-4},        {"air_mae", 2e-4},       {"air_rel_rmse", 2e-4}};
+  for (const auto& [name, tolerance] : numbers) {
+    if (!r.contains(name)) continue;
+    const double a = e.value(name, NAN), b = r[name].get<double>();
+    if (!(std::abs(a - b) <= tolerance)) {
+      fail(std::string("error/") + name + " " + std::to_string(a) + ", gl45 " + std::to_string(b));
+    }
+  }
+  for (const char* name : {"nonfinite_pixels", "counted_pixels", "covered_pixels", "air_pixels"}) {
+    if (!r.contains(name)) continue;
+    const long long a = e.value(name, -1LL), b = r[name].get<long long>();
+    const long long limit = std::string(name) == "nonfinite_pixels" ? 0 : kMovedPixels;
+    if (std::llabs(a - b) > limit) {
+      fail(std::string("error/") + name + " " + std::to_string(a) + ", gl45 " + std::to_string(b));
+    }
+  }
+  compareCounters(ref["counters"], own["counters"], own.value("unavailable", Json::object()),
+                  flavour, "counters");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: %s LESSON OUT_DIR [--reference DIR] [--levels N] [--set ...]\n",
+                 argv[0]);
+    return 2;
+  }
+  const std::string lesson = argv[1];
+  const std::filesystem::path out = argv[2];
+  std::filesystem::path reference;
+  std::vector<std::string> sets;
+  int levels = 0;
+  for (int i = 3; i + 1 < argc; i += 2) {
+    const std::string flag = argv[i];
+    if (flag == "--reference") {
+      reference = argv[i + 1];
+    } else if (flag == "--levels") {
+      levels = std::atoi(argv[i + 1]);
+    } else if (flag == "--set") {
+      sets.emplace_back(argv[i + 1]);
+    }
+  }
+  std::filesystem::create_directories(out);
+  try {
+    shadows::RunOptions options;
+    options.headless = true;
+    options.width = 320;  // the goldens' size
+    options.height = 240;
+    options.frames = 1;
+    shadows::Runner runner(lesson, shadows::makeLesson(lesson), options);
+    if (const std::string why = runner.applySets(sets); !why.empty()) {
+      std::fprintf(stderr, "%s\n", why.c_str());
+      return 2;
+    }
+    runner.initHeadless();
+    const std::vector<std::string> views = runner.params().at("view").choices;
+    for (const std::string& view : views) {
+      runner.params().set("view", view);
+      const int errors_before = runner.glErrors();
+      runner.renderFrame();
+      if (runner.glErrors() != errors_before) fail(view + ": GL errors");
+      const Image image = runner.readImage();
+      shadows::writePng((out / (view + ".png")).string(), image);
+      if (reference.empty()) continue;
+      const Image ref = shadows::readPng((reference / (view + ".png")).string());
+      if (const size_t moved = pixelsDiffering(image, ref, levels); moved > kMovedPixels) {
+        fail(view + ": " + std::to_string(moved) + " pixels differ from gl45's by more than " +
+             std::to_string(levels) + " levels (at most " + std::to_string(kMovedPixels) + ")");
+      }
+    }
+    runner.params().set("view", "shaded");
+    runner.renderFrame();
+    runner.measureError();
+    shadows::JsonWriter json;
+    runner.writeReport(json);
+    std::ofstream(out / "report.json") << json.str() << "\n";
+    if (!reference.empty()) {
+      const Json own = Json::parse(json.str(), nullptr, false);
+      const Json ref = readJson(reference / "report.json");
+      if (own.is_discarded() || ref.is_discarded()) {
+        fail("report: not JSON");
+      } else {
+        compareReports(ref, own);
+      }
+    }
+  } catch (const std::exception& e) {
+    fail(std::string("runtime failure: ") + e.what());
+  }
+  std::printf("%s: %s, %d failures\n", lesson.c_str(), out.string().c_str(), g_failures);
+  return g_failures == 0 ? 0 : 1;
+}
