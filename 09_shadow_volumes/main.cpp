@@ -72,6 +72,15 @@ class ShadowVolumes final : public Lesson {
     combine_ = p.addChoice("combine", {"additive", "modulative"}, "additive",
                            "light added where the count is 0 (seed 002), or the shadow darkened "
                            "over a lit frame (keeps a dimmed highlight in shadow)");
+    // The panel greys out what the current settings do not use, and says why.
+    const auto unless_zfail = [](const Params& ps) -> std::string {
+      return ps.at("volume.method").is("zpass") ? "z-pass draws no caps" : "";
+    };
+    light_cap_.param().inactive = unless_zfail;
+    dark_cap_.param().inactive = unless_zfail;
+    far_distance_.param().inactive = [](const Params& ps) -> std::string {
+      return ps.at("volume.far").is("infinite") ? "the far plane is at infinity" : "";
+    };
     cull_ = p.addBool("volume.cull", true, "skip volumes that cannot reach the view frustum");
     dimming_ = p.addFloat("dimming", 0.4f, 0.0f, 1.0f,
                           "light left in shadow: dimming + (1-dimming)*shade");
@@ -128,14 +137,14 @@ class ShadowVolumes final : public Lesson {
   }
 
   void panel(Frame&) override {
-    ImGui::Text("volumes %lld (z-fail %lld, culled %lld), triangles %lld", volumes_, zfail_,
-                culled_, triangles_);
-    ImGui::Text("silhouette edges %lld, eye far %s", silhouettes_,
-                far_used_ > 0.0f ? std::to_string(far_used_).c_str() : "infinite");
-    if (open_edges_ > 0) {
-      ImGui::TextWrapped("volume_open_edges %lld: %s open, closed as a two-sided shell",
-                         open_edges_, open_names_.c_str());
-    }
+    ImGui::TextWrapped(
+        "volumes %lld (z-fail %lld, culled %lld), %lld triangles, %lld silhouette "
+        "edges; eye far plane %s",
+        volumes_, zfail_, culled_, triangles_, silhouettes_,
+        far_used_ > 0.0f ? std::to_string(far_used_).c_str() : "at infinity");
+    ImGui::TextWrapped("volume_open_edges %lld%s%s", open_edges_,
+                       open_edges_ > 0 ? ": closed as two-sided shells: " : "",
+                       open_names_.c_str());
     if (clamp_refused_) ImGui::TextWrapped("GL_DEPTH_CLAMP is not offered here: finite far");
   }
 
