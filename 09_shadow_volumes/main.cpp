@@ -105,7 +105,9 @@ class ShadowVolumes final : public Lesson {
       f.clearTarget(visibility ? glm::vec3(0.0f) : Frame::kSky);
       drawScene(f, modulative ? "full" : "dim");
     }
-    // 2. The volumes into the stencil.
+    // 2. The volumes into the stencil (the counters say 0 on a frame without them).
+    volumes_ = zfail_ = culled_ = triangles_ = silhouettes_ = open_edges_ = 0;
+    open_names_.clear();
     if (!off_()) countVolumes(f);
     // 3. Light where the count is 0, or darken where it is not.
     {
@@ -311,8 +313,6 @@ class ShadowVolumes final : public Lesson {
   void countVolumes(Frame& f) {
     buildVolumes(f);
     auto timing = f.measure.pass("volumes", /*countPassed=*/true);
-    volumes_ = zfail_ = culled_ = triangles_ = silhouettes_ = open_edges_ = 0;
-    open_names_.clear();
     struct Draw {
       size_t object;
       bool zfail;
