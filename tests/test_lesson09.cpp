@@ -201,6 +201,25 @@ TEST(Lesson09, ModulativeKeepsADimmedHighlightInShadowAdditiveDoesNot) {
   }
   EXPECT_GT(shadow_differing, 1000u);
   EXPECT_LT(lit_differing, 50u) << "where lit both show the full light";
+  // Where the floor mirrors the light into the torus's shadow, modulative keeps a highlight:
+  // somewhere in the shadow it is brighter than additive, which it never is from the default
+  // eye (its ambient is dimmed too, so elsewhere it is darker).
+  const auto most_brighter_in_shadow = [](const std::vector<std::string>& view) {
+    std::vector<std::string> modulative_view = view;
+    modulative_view.push_back("combine=modulative");
+    const auto [add_image, visibility] = pictureAndVisibility(view);
+    const auto [mod_image, unused] = pictureAndVisibility(modulative_view);
+    int most = -255;
+    for (size_t i = 0; i < visibility.size(); ++i) {
+      if (visibility[i] >= 0.5f || add_image.rgba[4 * i + 3] == 0) continue;
+      most = std::max(most, mod_image.rgba[4 * i + 1] - add_image.rgba[4 * i + 1]);
+    }
+    return most;
+  };
+  const int mirror =
+      most_brighter_in_shadow({"camera.pos=-5.05,3,-4.7", "camera.target=-2.2,0,-1.8"});
+  EXPECT_GT(mirror, 12);
+  EXPECT_LT(most_brighter_in_shadow({}), 3);
 }
 
 TEST(Lesson09, EveryViewRendersCleanAndDistinct) {
