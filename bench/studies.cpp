@@ -13,7 +13,10 @@ Sweep shadowCostSweep() {
   Axis lessons{"lesson_tag", {}};
   for (const std::string& name : registeredLessons()) {
     Runner probe(name, makeLesson(name), RunOptions{});  // parameters only, no GL
+    // A map to cache is what the study's shadow.cache axis varies: lesson 09's volumes have
+    // none (their cost against 03 and 05 is volumes_vs_maps below).
     if (probe.params().find("shadow.off") == nullptr) continue;
+    if (probe.params().find("shadow.cache") == nullptr) continue;
     std::string bundle = name.substr(0, 2) + ":lesson=" + name;
     for (const Param& p : probe.params().all()) {
       if (p.kind == ParamKind::Bool && p.name.ends_with(".count"))
@@ -84,6 +87,32 @@ Sweep pcfCostStudy() {
           .study = true};
 }
 
+// Time against error, shadow volumes beside the maps (issue 21): lesson 03 (no bias) and 05
+// (PCF) at three map sizes, each map rendered every frame; lesson 09 is exact by construction
+// and pays in fill instead: silhouette volumes by z-pass, auto and z-fail, and one volume per
+// triangle ("trivial but bad").
+Sweep volumesVsMapsStudy() {
+  Axis technique{"technique", {}};
+  for (const char* lesson : {"03_shadow_map_basic", "05_pcf_dithered"}) {
+    for (const char* size : {"512", "1024", "2048"}) {
+      technique.values.push_back(std::string(lesson).substr(0, 2) + "_map" + size +
+                                 ":lesson=" + lesson + " shadow.size=" + size +
+                                 " shadow.cache=false inset=false");
+    }
+  }
+  for (const char* method : {"zpass", "auto", "zfail"}) {
+    technique.values.push_back(std::string("09_") + method +
+                               ":lesson=09_shadow_volumes volume.method=" + method);
+  }
+  technique.values.push_back(
+      "09_per_triangle:lesson=09_shadow_volumes volume.method=auto volume.geometry=per_triangle");
+  return {.scenes = {"torus_pyramid", "dueling"},
+          .axes = {technique},
+          .fixed = {},
+          .plot_metrics = {"false_shadow_pct", "false_lit_pct"},
+          .study = true};
+}
+
 }  // namespace
 
 std::map<std::string, Sweep> studies() {
@@ -92,7 +121,8 @@ std::map<std::string, Sweep> studies() {
   return {{"precision_near", precisionNearStudy()},
           {"precision_far", precisionFarStudy()},
           {"shadow_cost", shadowCostSweep()},
-          {"pcf_cost", pcfCostStudy()}};
+          {"pcf_cost", pcfCostStudy()},
+          {"volumes_vs_maps", volumesVsMapsStudy()}};
 }
 
 }  // namespace shadows::bench

@@ -255,6 +255,25 @@ Scene makeScene(const std::string& preset) {
          {0.8f, 0.8f, 0.8f}});
     s.light = {true, {-2.0f, 4.0f, -1.0f}, {0.0f, 0.0f, 0.0f}, 60.0f, 10.0f, 1.0f, 7.5f};
     s.camera = {{0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, -1.0f}, 45.0f, 0.1f, 100.0f};
+  } else if (preset == "eye_in_shadow") {
+    // Lesson 09: the eye in the torus's shadow, behind it, looking along its shadow on the
+    // floor (seed 003 slide 38, the z-pass near plane problem).
+    s = torusPyramid();
+    s.camera = {{-3.0f, 0.8f, -1.0f}, {-1.0f, 0.0f, 4.0f}, 45.0f, 0.1f, 100.0f};
+  } else if (preset == "fence") {
+    // Lesson 09: 500 slats in a row under a light, their shadows merged into one strip; an
+    // eye below them looking along the row sees the floor through hundreds of volumes, more
+    // than an 8-bit stencil counts (seed 003 slide 50).
+    s.objects.push_back(floorObject(12.0f, 0.0f));
+    const MeshData slat = makeBox({1.5f, 0.01f, 0.025f});
+    for (int i = 0; i < 500; ++i) {
+      s.objects.push_back({"slat_" + std::to_string(i),
+                           slat,
+                           translate({0.0f, 2.5f, 8.0f - 0.032f * static_cast<float>(i)}),
+                           {0.7f, 0.55f, 0.4f}});
+    }
+    s.light = {false, {0.0f, 10.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 90.0f, 10.0f, 1.0f, 30.0f};
+    s.camera = {{0.0f, 1.5f, 9.5f}, {0.0f, 0.0f, -4.0f}, 45.0f, 0.1f, 100.0f};
   } else if (preset == "room") {
     s = room();
   } else {

@@ -17,15 +17,26 @@ std::vector<std::string> lessonsWithABaseline() {
 class Baseline : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Baseline, RendersNoMapAndLightsEverything) {
-  auto runner = testing::startLesson(GetParam(), {"shadow.cache=false"}, 160, 120);
+  // A lesson without a map (09's volumes) has no cache and no map renders to count.
+  auto runner = testing::startLesson(GetParam(), {}, 160, 120);
+  const bool map = runner->params().find("shadow.cache") != nullptr;
+  const auto map_renders = [&] {
+    return map ? runner->measure().lastFrameCounts().at("shadow_map_renders") : 0;
+  };
+  if (map) {
+    ASSERT_EQ(runner->params().set("shadow.cache", "false"), "");
+  }
   runner->renderFrame();
-  EXPECT_EQ(runner->measure().lastFrameCounts().at("shadow_map_renders"), 1);
+  if (map) {
+    EXPECT_EQ(map_renders(), 1);
+  }
   ASSERT_EQ(runner->params().set("shadow.off", "true"), "");
   runner->renderFrame();
   const auto& work = runner->measure().lastFrameWork();
-  EXPECT_EQ(runner->measure().lastFrameCounts().at("shadow_map_renders"), 0);
+  EXPECT_EQ(map_renders(), 0);
   EXPECT_EQ(work.count("shadow"), 0u) << "no map pass";
   EXPECT_EQ(work.count("readback"), 0u);
+  EXPECT_EQ(work.count("volumes"), 0u) << "no volume pass";
   // Everything lit: nothing the truth calls lit is drawn shadowed, and every shadow is missed.
   const ErrorMetrics& e = runner->measureError().metrics;
   EXPECT_EQ(e.false_shadow_pct, 0.0);
@@ -33,9 +44,13 @@ TEST_P(Baseline, RendersNoMapAndLightsEverything) {
   EXPECT_EQ(runner->glErrors(), 0);
   // Back on: the map is rendered again.
   ASSERT_EQ(runner->params().set("shadow.off", "false"), "");
-  ASSERT_EQ(runner->params().set("shadow.cache", "true"), "");
+  if (map) {
+    ASSERT_EQ(runner->params().set("shadow.cache", "true"), "");
+  }
   runner->renderFrame();
-  EXPECT_EQ(runner->measure().lastFrameCounts().at("shadow_map_renders"), 1);
+  if (map) {
+    EXPECT_EQ(map_renders(), 1);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Lessons, Baseline, ::testing::ValuesIn(lessonsWithABaseline()),

@@ -116,6 +116,15 @@ const std::map<std::string, std::vector<std::string>> kActsWhen = {
     {"pcf.taps", {"pcf.mode=poisson"}},
     // How the copy is made shows in its counters, on frames that render the map.
     {"map.path", {"shadow.cache=false"}},
+    // 09: the caps and the far distance act in z-fail and with a finite far plane; the method
+    // where auto picks z-fail for one caster; the clamp past 255 volumes; culling where a
+    // volume lies out of view.
+    {"volume.light_cap", {"volume.method=zfail"}},
+    {"volume.dark_cap", {"volume.method=zfail"}},
+    {"volume.far_distance", {"volume.far=finite"}},
+    {"volume.method", {"scene=eye_in_shadow"}},
+    {"stencil.op", {"scene=fence"}},
+    {"volume.cull", {"camera.pos=5,3,6", "camera.target=6,0,8"}},
 };
 
 class ParamEffects : public ::testing::TestWithParam<std::string> {};

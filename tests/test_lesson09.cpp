@@ -1,0 +1,247 @@
+// Lesson 09 end to end, headless: each choice the shadow-volume slides discuss, its failure
+// measured against the ray-traced truth, and its fix.
+#include "harness.hpp"
+
+#include "shadow_volume.hpp"
+
+namespace shadows {
+namespace {
+
+using testing::label;
+using testing::reportNumber;
+using testing::startLesson;
+
+const std::string kLesson = "09_shadow_volumes";
+
+// Renders once and measures against the truth.
+ErrorMetrics measured(const std::vector<std::string>& sets, int w = 320, int h = 240) {
+  auto runner = startLesson(kLesson, sets, w, h);
+  runner->renderFrame();
+  const ErrorMetrics e = runner->measureError().metrics;
+  EXPECT_EQ(runner->glErrors(), 0) << label(sets);
+  EXPECT_GT(e.counted_pixels, 1000) << label(sets);
+  return e;
+}
+
+double wrongPct(const ErrorMetrics& e) {
+  return e.false_shadow_pct + e.false_lit_pct;
+}
+
+long long counter(Runner& runner, const std::string& name) {
+  return runner.measure().lastFrameCounts().at(name);
+}
+
+TEST(Lesson09, SnapshotMatchesTheGolden) {
+  auto runner = startLesson(kLesson, {});
+  runner->renderFrame();
+  testing::expectMatchesGolden(runner->readImage(), kLesson);
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
+TEST(Lesson09, WeldingClosesTheSeamsAndNamesAnOpenMesh) {
+  // Every caster of the presets closes once welded by position; a plane does not: its rim is
+  // open and it becomes a two-sided shell.
+  for (const MeshData& closed : {makeTorus(1.0f, 0.35f, 96, 48), makeSphere(0.45f, 48, 24),
+                                 makePyramid(0.8f, 1.6f), makeBox({1, 1, 1})}) {
+    const EdgeMesh m = buildEdgeMesh(closed);
+    EXPECT_EQ(m.open_edges, 0);
+    EXPECT_FALSE(m.two_sided);
+    EXPECT_EQ(m.edges.size() * 2, m.planes.size() * 3) << "each edge shared by two triangles";
+  }
+  const EdgeMesh plane = buildEdgeMesh(makePlane(1, 1));
+  EXPECT_EQ(plane.open_edges, 4);
+  EXPECT_TRUE(plane.two_sided);
+  EXPECT_EQ(plane.edges.size(), 5u + 1u) << "two triangles and their reversed copies";
+}
+
+TEST(Lesson09, AutoAndZFailWithCapsMatchTheTruthOnEveryPreset) {
+  // Exact up to rasterization at the shadow edges: bound 0.05 % of the counted pixels.
+  auto probe = startLesson(kLesson, {}, 8, 8);
+  const std::vector<std::string> scenes = probe->params().at("scene").choices;
+  probe.reset();
+  for (const std::string& scene : scenes) {
+    for (const std::string method : {"auto", "zfail"}) {
+      const std::vector<std::string> sets = {"scene=" + scene, "volume.method=" + method};
+      EXPECT_LE(wrongPct(measured(sets)), 0.05) << label(sets);
+    }
+  }
+}
+
+TEST(Lesson09, ExactOnLightPositionsTheOtherTestsDoNotUse) {
+  for (const std::string light :
+       {"light.pos=-3,5,4", "light.pos=1,9,-2", "light.pos=6,2.5,1", "light.pos=0.3,4,0.2"}) {
+    const std::vector<std::string> sets = {light};
+    EXPECT_LE(wrongPct(measured(sets)), 0.05) << label(sets);
+  }
+  const std::vector<std::string> directional = {"light.type=directional"};
+  EXPECT_LE(wrongPct(measured(directional)), 0.05);
+}
+
+TEST(Lesson09, EyeInsideAVolumeBreaksZPassNotZFail) {
+  // Slide 38: the near plane clips the volume the eye sits in, so every z-pass count is one
+  // short. Slide 45: auto sees the near plane in the pyramid's volume and takes z-fail there.
+  const ErrorMetrics zpass = measured({"scene=eye_in_shadow", "volume.method=zpass"});
+  EXPECT_GE(wrongPct(zpass), 10.0);
+  EXPECT_LE(wrongPct(measured({"scene=eye_in_shadow", "volume.method=zfail"})), 0.05);
+  auto runner = startLesson(kLesson, {"scene=eye_in_shadow"});
+  runner->renderFrame();
+  EXPECT_GE(counter(*runner, "volumes_zfail"), 1);
+  EXPECT_LT(counter(*runner, "volumes_zfail"), counter(*runner, "volumes_drawn"));
+  EXPECT_LE(wrongPct(runner->measureError().metrics), 0.05);
+}
+
+TEST(Lesson09, DroppingACapBreaksZFail) {
+  // Without the light cap every lit caster face counts one back face too many. Without the
+  // dark cap a ray that leaves the volume at infinity, as the eye's rays do when it looks
+  // along the light's, misses its exit: seen from behind the light.
+  EXPECT_GE(wrongPct(measured({"volume.method=zfail", "volume.light_cap=false"})), 5.0);
+  const std::vector<std::string> behind_light = {"volume.method=zfail", "camera.pos=4.5,7,5.5"};
+  std::vector<std::string> no_dark_cap = behind_light;
+  no_dark_cap.push_back("volume.dark_cap=false");
+  EXPECT_GE(wrongPct(measured(no_dark_cap)), 5.0);
+  EXPECT_LE(wrongPct(measured(behind_light)), 0.05);
+}
+
+TEST(Lesson09, AFiniteFarPlaneBreaksZFailInfinityOrDepthClampMendIt) {
+  // Slide 44: "problem at far clip plane": the dark cap at infinity is clipped away.
+  const std::vector<std::string> base = {"volume.method=zfail"};
+  const auto with = [&](const std::string& far) {
+    std::vector<std::string> s = base;
+    s.push_back("volume.far=" + far);
+    return wrongPct(measured(s));
+  };
+  EXPECT_GE(with("finite"), 5.0);
+  EXPECT_LE(with("infinite"), 0.05);
+  EXPECT_LE(with("depth_clamp"), 0.05);
+}
+
+TEST(Lesson09, SilhouettesRasterizeFiveTimesFewerStencilFragmentsForTheSameShadow) {
+  const auto run = [](const std::string& geometry) {
+    auto runner = startLesson(kLesson, {"scene=torus_pyramid", "volume.geometry=" + geometry});
+    runner->renderFrame();
+    const long long fragments =
+        runner->measure().lastFrameWork().at("volumes").fragment_invocations;
+    const long long triangles = counter(*runner, "volume_triangles");
+    return std::tuple{fragments, triangles, runner->renderVisibility()};
+  };
+  const auto [sil_fragments, sil_triangles, sil_vis] = run("silhouette");
+  const auto [tri_fragments, tri_triangles, tri_vis] = run("per_triangle");
+  EXPECT_GT(sil_fragments, 0);
+  EXPECT_GE(tri_fragments, 5 * sil_fragments);
+  EXPECT_GE(tri_triangles, 5 * sil_triangles);
+  EXPECT_EQ(testing::valuesDiffering(sil_vis, tri_vis), 0u) << "a bit-identical shadow term";
+}
+
+TEST(Lesson09, MoreThan255VolumesBreakTheClampingOpsNotTheWrappingOnes) {
+  const ErrorMetrics clamp = measured({"scene=fence", "stencil.op=clamp"});
+  const ErrorMetrics wrap = measured({"scene=fence", "stencil.op=wrap"});
+  EXPECT_GE(wrongPct(clamp), 1.0);
+  EXPECT_LE(wrongPct(wrap), 0.05);
+}
+
+// The picture and the shadow term of one setting (one GL context at a time).
+std::pair<Image, std::vector<float>> pictureAndVisibility(const std::vector<std::string>& sets) {
+  auto runner = startLesson(kLesson, sets);
+  runner->renderFrame();
+  Image image = runner->readImage();
+  std::vector<float> visibility = runner->renderVisibility();
+  EXPECT_EQ(runner->glErrors(), 0) << label(sets);
+  return {std::move(image), std::move(visibility)};
+}
+
+TEST(Lesson09, TwoSidedStencilCountsWhatTwoPassesCount) {
+  const auto [a, two_pass] = pictureAndVisibility({"stencil.mode=two_pass"});
+  const auto [b, two_sided] = pictureAndVisibility({"stencil.mode=two_sided"});
+  EXPECT_EQ(testing::valuesDiffering(two_pass, two_sided), 0u);
+  EXPECT_EQ(testing::pixelsDiffering(a, b, 0), 0u);
+}
+
+TEST(Lesson09, AnOpenCasterIsNamedAndStillShadowsCorrectly) {
+  // The floor lit from below casts (castsFrom) over everything, the eye included: it is open,
+  // closed as a two-sided shell, and auto takes z-fail for it.
+  auto runner = startLesson(kLesson, {"light.pos=1,-4,1"});
+  runner->renderFrame();
+  EXPECT_EQ(reportNumber(*runner, "volume_open_edges"), 4);
+  EXPECT_EQ(testing::reportString(*runner, "volume_open_casters"), "floor");
+  EXPECT_LE(wrongPct(runner->measureError().metrics), 0.05);
+}
+
+TEST(Lesson09, VolumesOutsideTheViewAreCulledWithoutChangingTheShadow) {
+  // Looking at the floor on the light's side: every volume runs away from the view.
+  const std::vector<std::string> view = {"camera.pos=5,3,6", "camera.target=6,0,8"};
+  auto culled = startLesson(kLesson, view);
+  culled->renderFrame();
+  EXPECT_EQ(counter(*culled, "culled_volumes"), 3);
+  EXPECT_EQ(counter(*culled, "volumes_drawn"), 0);
+  const Image kept = culled->readImage();
+  culled.reset();
+  std::vector<std::string> all = view;
+  all.push_back("volume.cull=false");
+  auto drawn = startLesson(kLesson, all);
+  drawn->renderFrame();
+  EXPECT_EQ(counter(*drawn, "culled_volumes"), 0);
+  EXPECT_EQ(counter(*drawn, "volumes_drawn"), 3);
+  EXPECT_EQ(testing::pixelsDiffering(kept, drawn->readImage(), 0), 0u);
+}
+
+TEST(Lesson09, ModulativeKeepsADimmedHighlightInShadowAdditiveDoesNot) {
+  // Seed 002: "specular highlights in shadow will appear as darkened specular highlights".
+  // The same shadow term; the pictures differ where shadowed, and only there (both read
+  // bottom row first).
+  const auto [additive, a] = pictureAndVisibility({"combine=additive"});
+  const auto [modulative, m] = pictureAndVisibility({"combine=modulative"});
+  EXPECT_EQ(testing::valuesDiffering(a, m), 0u);
+  size_t lit_differing = 0, shadow_differing = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    int worst = 0;
+    for (size_t c = 0; c < 3; ++c) {
+      worst = std::max(worst, std::abs(additive.rgba[4 * i + c] - modulative.rgba[4 * i + c]));
+    }
+    (a[i] >= 0.5f ? lit_differing : shadow_differing) += worst > 2;
+  }
+  EXPECT_GT(shadow_differing, 1000u);
+  EXPECT_LT(lit_differing, 50u) << "where lit both show the full light";
+  // Where the floor mirrors the light into the torus's shadow, modulative keeps a highlight:
+  // somewhere in the shadow it is brighter than additive, which it never is from the default
+  // eye (its ambient is dimmed too, so elsewhere it is darker).
+  const auto most_brighter_in_shadow = [](const std::vector<std::string>& view) {
+    std::vector<std::string> modulative_view = view;
+    modulative_view.push_back("combine=modulative");
+    const auto [add_image, visibility] = pictureAndVisibility(view);
+    const auto [mod_image, unused] = pictureAndVisibility(modulative_view);
+    int most = -255;
+    for (size_t i = 0; i < visibility.size(); ++i) {
+      if (visibility[i] >= 0.5f || add_image.rgba[4 * i + 3] == 0) continue;
+      most = std::max(most, mod_image.rgba[4 * i + 1] - add_image.rgba[4 * i + 1]);
+    }
+    return most;
+  };
+  const int mirror =
+      most_brighter_in_shadow({"camera.pos=-5.05,3,-4.7", "camera.target=-2.2,0,-1.8"});
+  EXPECT_GT(mirror, 12);
+  EXPECT_LT(most_brighter_in_shadow({}), 3);
+}
+
+TEST(Lesson09, EveryViewRendersCleanAndDistinct) {
+  auto runner = startLesson(kLesson, {});
+  testing::expectEveryViewCleanAndDistinct(*runner);
+  auto fence = startLesson(kLesson, {"scene=fence", "stencil.op=clamp"});
+  testing::expectEveryViewCleanAndDistinct(*fence, "fence");
+}
+
+TEST(Lesson09, SliderExtremesStayFiniteAndErrorFree) {
+  testing::expectFiniteAndErrorFree(
+      kLesson, {{"volume.method=zpass", "volume.geometry=per_triangle", "stencil.mode=two_sided"},
+                {"volume.method=zfail", "volume.far=finite", "volume.far_distance=2"},
+                {"volume.far=depth_clamp", "volume.far_distance=1000"},
+                {"light.pos=0,0.5,0", "light.target=0,0.5,0"},
+                {"light.pos=-50,0.01,0"},
+                {"light.type=directional", "light.pos=0,5,0"},
+                {"camera.pos=0.6,0.45,1.6", "light.pos=-3,7,2"},  // the eye inside the sphere
+                {"shadow.off=true", "combine=modulative"},
+                {"dimming=0"},
+                {"dimming=1"}});
+}
+
+}  // namespace
+}  // namespace shadows
