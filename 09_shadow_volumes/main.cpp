@@ -17,6 +17,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app.hpp"
+#include "caps.hpp"
 #include "json.hpp"
 #include "shadow_volume.hpp"
 
@@ -184,7 +185,7 @@ class ShadowVolumes final : public Lesson {
     f.projection = glm::perspective(fov, aspect, near, far_used_);
     if (far_() == Far::DepthClamp) {
       // Slide 50, "hardware capping": desktop GL 3.2 (GLES 3.0 has no depth clamp).
-      depth_clamp_ = GLAD_GL_VERSION_3_2 != 0;
+      depth_clamp_ = caps().depth_clamp;
       clamp_refused_ = !depth_clamp_;
     }
   }
@@ -435,7 +436,7 @@ class ShadowVolumes final : public Lesson {
 
   // GL_DEPTH_CLAMP is desktop GL 3.2 only (not GLES 3.0): never touched without it.
   static void depthClamp(bool on) {
-    if (GLAD_GL_VERSION_3_2 == 0) return;
+    if (!caps().depth_clamp) return;
     on ? glEnable(GL_DEPTH_CLAMP) : glDisable(GL_DEPTH_CLAMP);
   }
 

@@ -44,6 +44,7 @@ bool loadGl(GLADloadfunc load) {
   if (gladLoadGL(load) == 0) return false;
   c.samples_passed = c.texture_1d = c.border_clamp = c.clip_distance = true;
   c.depth_readback = c.float_color_targets = true;
+  c.depth_clamp = GLAD_GL_VERSION_3_2 != 0;
   c.pipeline_statistics = GLAD_GL_ARB_pipeline_statistics_query != 0;
   c.debug_output = GLAD_GL_KHR_debug != 0;
 #if SHADOWS_GL_VERSION >= 430

@@ -27,6 +27,7 @@ struct Caps {
   bool depth_readback = false;        // glReadPixels and copies of depth; else via colour
   bool early_fragment_tests = false;  // layout(early_fragment_tests): GL 4.2; else the driver's
   bool float_color_targets = false;   // RGBA32F colour attachments (the truth's read backs)
+  bool depth_clamp = false;           // GL_DEPTH_CLAMP (GL 3.2; not in ES 3.0 nor WebGL 2)
 
   // "unavailable on gles30": what a report or panel says for a number this context lacks.
   std::string unavailable() const { return "unavailable on " + flavour; }

@@ -22,6 +22,7 @@
 // GL there (Caps says so first), only compared and stored.
 #define GL_CLAMP_TO_BORDER 0x812D
 #define GL_SAMPLES_PASSED 0x8914
+#define GL_DEPTH_CLAMP 0x864F
 // KHR_debug, which ES has only as an extension, with suffixed names.
 #define GL_DEBUG_OUTPUT GL_DEBUG_OUTPUT_KHR
 #define GL_DEBUG_OUTPUT_SYNCHRONOUS GL_DEBUG_OUTPUT_SYNCHRONOUS_KHR

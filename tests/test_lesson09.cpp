@@ -119,8 +119,9 @@ TEST(Lesson09, SilhouettesRasterizeFiveTimesFewerStencilFragmentsForTheSameShado
   const auto run = [](const std::string& geometry) {
     auto runner = startLesson(kLesson, {"scene=torus_pyramid", "volume.geometry=" + geometry});
     runner->renderFrame();
+    // llvmpipe on desktop GL counts them (ES cannot: this test runs on gl45).
     const long long fragments =
-        runner->measure().lastFrameWork().at("volumes").fragment_invocations;
+        runner->measure().lastFrameWork().at("volumes").fragment_invocations.value_or(-1);
     const long long triangles = counter(*runner, "volume_triangles");
     return std::tuple{fragments, triangles, runner->renderVisibility()};
   };
