@@ -203,6 +203,25 @@ TEST(Lesson08, NoAirStillReportsTheAirFiguresWithTheReason) {
   EXPECT_TRUE(lit->measureError().metrics.air.note.empty());
 }
 
+TEST(Lesson08, ADarkTruthGivesNoRelativeErrorButSaysWhy) {
+  // The light inside the sphere: the truth's air is all but dark, the map leaks light at its
+  // near plane. The ratio to that truth was 163.7 (16,370 %): now null, with the reason.
+  auto runner = startLesson(kLesson, {"light.pos=1.2,2.9,-0.6"});
+  runner->renderFrame();
+  const AirMetrics dark = runner->measureError().metrics.air;
+  EXPECT_LT(dark.truth_mean, kAirRelFloor);
+  EXPECT_GT(dark.pixels, 0) << "the leak is air light the figures still see";
+  EXPECT_TRUE(std::isnan(dark.rel_rmse)) << dark.rel_rmse;
+  EXPECT_GT(dark.mae, 0.0) << "air_mae is still reported";
+  EXPECT_TRUE(testing::reportValue(*runner, "air_rel_rmse").is_null());
+  EXPECT_NE(testing::reportString(*runner, "air_rel_rmse_note").find("below"), std::string::npos);
+  // The defaults keep their number and have no such note.
+  const AirMetrics lit = measure({}).air;
+  EXPECT_GE(lit.truth_mean, kAirRelFloor);
+  EXPECT_TRUE(std::isfinite(lit.rel_rmse));
+  EXPECT_TRUE(lit.rel_rmse_note.empty());
+}
+
 // Every kind of light, both ways of placing the slices: within 1.5x the defaults' error.
 struct AirCase {
   std::string name;
