@@ -37,7 +37,7 @@ class Atmospherics final : public Lesson {
   void declare(Params& p) override {
     map_.declare(p);
     slices_ = p.addInt("air.slices", 64, 1, 256, "slices through the lit air, back to front");
-    density_ = p.addFloat("air.density", 0.08f, 0.0f, 1.0f, "dust: light scattered per world unit");
+    density_ = p.addFloat("air.density", 0.15f, 0.0f, 1.0f, "dust: light scattered per world unit");
     jitter_ = p.addBool("air.jitter", true,
                         "move each pixel's sample within its slice: noise, not bands");
     bound_ = p.addBool("air.bound", true,

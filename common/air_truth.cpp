@@ -1,6 +1,7 @@
 // The truth for lesson 08's air: single scattering along each eye ray, with Embree shadow rays.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <thread>
@@ -150,8 +151,19 @@ AirMetrics compareAir(const std::vector<float>& rendered, const Truth::AirResult
     const double n = static_cast<double>(m.pixels);
     m.mae = abs_sum / n;
     m.truth_mean = truth_sum / n;
-    // No light in the truth but some in the picture: wholly wrong, not 0 % wrong.
-    m.rel_rmse = truth_sq > 0.0 ? std::sqrt(sq_sum / truth_sq) : sq_sum > 0.0 ? 1.0 : 0.0;
+    // A truth too dark to see (a light inside a caster, whose map leaks) makes the ratio
+    // huge and meaningless (163.7 was reported): no number, and why.
+    if (m.truth_mean < kAirRelFloor) {
+      m.rel_rmse = std::nan("");
+      char buf[160];
+      std::snprintf(buf, sizeof buf,
+                    "truth's mean air light %.2g is below %.2g (one 8-bit step): a ratio to it "
+                    "means nothing; see air_mae",
+                    m.truth_mean, kAirRelFloor);
+      m.rel_rmse_note = buf;
+    } else {
+      m.rel_rmse = std::sqrt(sq_sum / truth_sq);
+    }
   }
   return m;
 }

@@ -92,6 +92,7 @@ void Runner::writeReport(JsonWriter& json) {
       json.value("air_truth_noise", e.air.truth_noise);
       json.value("air_pixels", e.air.pixels);
       if (!e.air.note.empty()) json.value("air_note", e.air.note);
+      if (!e.air.rel_rmse_note.empty()) json.value("air_rel_rmse_note", e.air.rel_rmse_note);
     }
     json.endObject();
   }

@@ -201,6 +201,9 @@ void Runner::drawPanel(Frame& frame) {
       }
       if (e.air.valid && !e.air.note.empty()) {
         ImGui::TextWrapped("air: 0 (%s)", e.air.note.c_str());
+      } else if (e.air.valid && !e.air.rel_rmse_note.empty()) {
+        ImGui::TextWrapped("air: mae %.4f  rel. RMSE: none (%s)", e.air.mae,
+                           e.air.rel_rmse_note.c_str());
       } else if (e.air.valid) {
         ImGui::TextWrapped("air: mae %.4f  rel. RMSE %.1f%% (truth mean %.3f, noise %.4f)",
                            e.air.mae, 100.0 * e.air.rel_rmse, e.air.truth_mean, e.air.truth_noise);

@@ -86,14 +86,18 @@ class Truth {
 };
 
 // The air light against its truth, over the pixels where either is non-zero.
+// Below this mean truth air light (one step of an 8-bit picture) the truth's air is invisible
+// and a ratio to it measures nothing: air_rel_rmse is then null with a note; air_mae stays.
+inline constexpr double kAirRelFloor = 1.0 / 255.0;
 struct AirMetrics {
-  bool valid = false;        // measured: the lesson has a medium (every field then reported)
-  std::string note;          // why the numbers are 0 when no pixel has air light in either
-  double mae = 0.0;          // mean |rendered - truth|
-  double rel_rmse = 0.0;     // sqrt(mean (rendered - truth)^2) / sqrt(mean truth^2); 1 when
-                             // the truth has no light and the picture has some
-  double truth_mean = 0.0;   // mean truth over the same pixels (the scale of the numbers)
-  double truth_noise = 0.0;  // the truth's own error estimate (AirResult::noise)
+  bool valid = false;         // measured: the lesson has a medium (every field then reported)
+  std::string note;           // why the numbers are 0 when no pixel has air light in either
+  double mae = 0.0;           // mean |rendered - truth|
+  double rel_rmse = 0.0;      // sqrt(mean (rendered - truth)^2) / sqrt(mean truth^2); NaN
+                              // (reported null) when truth_mean < kAirRelFloor
+  std::string rel_rmse_note;  // why rel_rmse is NaN
+  double truth_mean = 0.0;    // mean truth over the same pixels (the scale of the numbers)
+  double truth_noise = 0.0;   // the truth's own error estimate (AirResult::noise)
   long long pixels = 0;
   long long nonfinite = 0;
 };

@@ -38,7 +38,9 @@ for list in [0-9][0-9]_*/pictures.txt; do
     row="| $file | \`${flags:-defaults}\` | $(num false_shadow_pct) | $(num false_lit_pct) | $(num vis_mae) | $frame |"
     if grep -q '"air_rel_rmse"' "$report"; then
       air=1
-      rel=$(grep -o '"air_rel_rmse": [-0-9.e+]*' "$report" | awk '{printf "%.3g", 100 * $2}')
+      # null below the truth's floor (air_rel_rmse_note says why): no number, a dash
+      rel=$(grep -o '"air_rel_rmse": [-0-9.e+nul]*' "$report" | head -1 |
+        awk '{if ($2 == "null") print "—"; else printf "%.3g", 100 * $2}')
       row="$row $rel | $(num air_mae) |"
     fi
     if grep -q '"step_world_at_nearest_caster"' "$report"; then
