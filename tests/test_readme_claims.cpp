@@ -4,11 +4,17 @@
 // The test runs the lesson headless with those flags (--frames 1, the README's own --size if
 // it gives one, else 640x480), reads the report field by its JSON pointer and checks it within
 // the stated precision. Only what is deterministic can be claimed: error numbers and work
-// counters, never timings (a field ending in _ms or named *_overhead is refused).
+// counters, never timings (a field ending in _ms or named *_overhead is refused). A timing
+// is claimed against the CSV it was read from instead, never re-timed:
+//   <!-- csv-claim: docs/bench_precision_far.csv map=16bit_two_digits => median(frame_ms) 53.9 +-
+//   0.05 -->
+// takes the rows whose columns hold every key=value given, and compares the median of the
+// column over them.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -51,16 +57,20 @@ std::vector<Claim> claimsIn(const fs::path& readme) {
   return claims;
 }
 
-std::vector<Claim> allClaims() {
-  std::vector<Claim> claims;
-  // The project's README and each directory's (lessons, tests, bench), one level down.
-  std::vector<fs::path> readmes = {fs::path(SHADOWS_SOURCE_DIR) / "README.md"};
+// The project's README and each directory's (lessons, tests, bench), one level down.
+std::vector<fs::path> readmes() {
+  std::vector<fs::path> found = {fs::path(SHADOWS_SOURCE_DIR) / "README.md"};
   for (const auto& entry : fs::directory_iterator(SHADOWS_SOURCE_DIR)) {
     if (entry.is_directory() && fs::exists(entry.path() / "README.md")) {
-      readmes.push_back(entry.path() / "README.md");
+      found.push_back(entry.path() / "README.md");
     }
   }
-  for (const fs::path& readme : readmes) {
+  return found;
+}
+
+std::vector<Claim> allClaims() {
+  std::vector<Claim> claims;
+  for (const fs::path& readme : readmes()) {
     for (Claim& c : claimsIn(readme)) claims.push_back(std::move(c));
   }
   return claims;
@@ -96,6 +106,94 @@ TEST(ReadmeClaims, EveryQuotedErrorAndCounterStillMeasuresSo) {
         << where << ": the README says " << c.value << ", the lesson now measures " << measured;
   }
   fs::remove(report);
+}
+
+// ---------------------------------------------------------------- timings, from their CSV
+
+struct CsvClaim {
+  std::string readme, csv, column;
+  std::vector<std::pair<std::string, std::string>> filters;
+  double value = 0, tolerance = 0;
+  int line = 0;
+};
+
+std::vector<std::string> csvFields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (const char c : line) {
+    if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+TEST(ReadmeClaims, EveryQuotedTimingIsTheMedianOfTheCsvItCites) {
+  const std::regex pattern(
+      R"(^\s*<!--\s*csv-claim:\s*(\S+)\s+(.*?)\s*=>\s*median\((\S+)\)\s+([-0-9.eE+]+)\s*\+-\s*([0-9.eE+-]+)\s*-->)");
+  std::vector<CsvClaim> claims;
+  for (const fs::path& readme : readmes()) {
+    std::ifstream in(readme);
+    int number = 0;
+    for (std::string line; std::getline(in, line);) {
+      ++number;
+      std::smatch m;
+      const auto at = line.find("<!-- csv-claim:");
+      if (at == std::string::npos || at != line.find_first_not_of(" \t")) continue;
+      ASSERT_TRUE(std::regex_search(line, m, pattern)) << readme << ":" << number << ": " << line;
+      CsvClaim c{fs::relative(readme, SHADOWS_SOURCE_DIR).string(),
+                 m[1],
+                 m[3],
+                 {},
+                 std::stod(m[4]),
+                 std::stod(m[5]),
+                 number};
+      std::stringstream words(m[2].str());
+      for (std::string word; words >> word;) {
+        const auto eq = word.find('=');
+        ASSERT_NE(eq, std::string::npos) << c.readme << ":" << number << ": " << word;
+        c.filters.emplace_back(word.substr(0, eq), word.substr(eq + 1));
+      }
+      claims.push_back(c);
+    }
+  }
+  ASSERT_GE(claims.size(), 3u) << "the READMEs' timing claims were not found";
+  for (const CsvClaim& c : claims) {
+    const std::string where = c.readme + ":" + std::to_string(c.line);
+    std::ifstream in(fs::path(SHADOWS_SOURCE_DIR) / c.csv);
+    ASSERT_TRUE(in) << where << ": no " << c.csv;
+    std::string line;
+    std::getline(in, line);
+    const std::vector<std::string> header = csvFields(line);
+    const auto column = [&](const std::string& name) {
+      const auto it = std::find(header.begin(), header.end(), name);
+      return it == header.end() ? -1 : static_cast<int>(it - header.begin());
+    };
+    ASSERT_GE(column(c.column), 0) << where << ": no column " << c.column;
+    std::vector<double> values;
+    while (std::getline(in, line)) {
+      const std::vector<std::string> row = csvFields(line);
+      bool match = true;
+      for (const auto& [key, value] : c.filters) {
+        const int k = column(key);
+        ASSERT_GE(k, 0) << where << ": no column " << key;
+        match =
+            match && static_cast<size_t>(k) < row.size() && row[static_cast<size_t>(k)] == value;
+      }
+      const auto k = static_cast<size_t>(column(c.column));
+      if (match && k < row.size() && !row[k].empty()) values.push_back(std::stod(row[k]));
+    }
+    ASSERT_FALSE(values.empty()) << where << ": no row matches";
+    std::sort(values.begin(), values.end());
+    const size_t n = values.size();
+    const double median = n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+    EXPECT_NEAR(median, c.value, c.tolerance)
+        << where << ": the README says " << c.value << ", " << c.csv << " gives " << median;
+  }
 }
 
 }  // namespace
