@@ -159,7 +159,9 @@ class PcfDithered final : public Lesson {
     json.value("match_occluder_distance", d_occluder_);
     json.value("match_receiver_distance", d_receiver_);
     json.value("match_texel_world", texel_world_);
-    if (caps().storage_buffers) {
+    // Counted only with pcf.count on and storage buffers (GL 4.3); else null, never a number
+    // left from another frame.
+    if (caps().storage_buffers && count_()) {
       json.value("taps_per_filtered_fragment",
                  counts_[1] > 0 ? static_cast<double>(counts_[0]) / counts_[1] : 0.0);
     } else {

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -158,6 +159,9 @@ int runLessonMain(int argc, char** argv) {
     std::fprintf(stderr, "%s: %s\n", lessons[0].c_str(), printable(message).c_str());
     return exit_code;
   };
+  // A reader that goes away (`| head`) makes writes fail with EPIPE, which the outputs clean
+  // up after, instead of a signal that kills the run with its temporaries on disk.
+  std::signal(SIGPIPE, SIG_IGN);
   RunOptions options;
   if (std::string e = parseCommandLine(argc, argv, options); !e.empty()) return complain(e, 2);
   if (options.help) {

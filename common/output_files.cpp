@@ -126,9 +126,13 @@ std::string resolveOutput(const std::string& path, OutputTarget& target) {
     const fs::path real = fs::canonical(path, ec);
     if (ec) return ec.message();
     target.path = real.string();
-    // A writable file in a directory we may not add to is rewritten where it is.
-    target.kind = canCreateIn(real.parent_path().string()) ? OutputTarget::Kind::Replace
-                                                           : OutputTarget::Kind::InPlace;
+    // Replacing swaps the inode: fine for a file of ours with one name. A file someone else
+    // owns (its owner, ACLs, a sticky /tmp that refuses the rename), one with other hard
+    // links (they would keep the old bytes), or one in a directory we may not add to is
+    // rewritten where it is instead.
+    const bool ours = st.st_uid == geteuid() && st.st_nlink == 1;
+    target.kind = ours && canCreateIn(real.parent_path().string()) ? OutputTarget::Kind::Replace
+                                                                   : OutputTarget::Kind::InPlace;
     return {};
   }
   if (errno != ENOENT) return std::strerror(errno);
@@ -166,6 +170,11 @@ bool OutputBatch::commit() {
     const auto& [path, bytes] = files_[i];
     if (bytes.empty()) return fail(i, "nothing to write");
     if (std::string why = resolveOutput(path, targets[i]); !why.empty()) return fail(i, why);
+    for (size_t j = 0; j < i; ++j) {
+      if (targets[j].identity == targets[i].identity && !targets[i].character_device) {
+        return fail(i, "the same file as " + printable(files_[j].first));
+      }
+    }
     if (targets[i].kind != OutputTarget::Kind::Replace) continue;
     struct stat existing {};
     const mode_t mode = stat(targets[i].path.c_str(), &existing) == 0
@@ -194,10 +203,17 @@ bool OutputBatch::commit() {
         return fail(i, errno != 0 ? std::strerror(errno) : "write failed");
       }
     } else if (t.kind == OutputTarget::Kind::InPlace) {
-      const int fd = open(t.path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
-      bool ok = fd >= 0 && writeAll(fd, bytes);
+      // Non-blocking open: a FIFO nobody reads is "no reader", not a hang. A regular file is
+      // not truncated before the bytes are in (a full disk leaves the old content, not none).
+      const int fd = open(t.path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+      if (fd < 0) return fail(i, errno == ENXIO ? "no reader on the pipe" : std::strerror(errno));
+      bool ok = fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK) == 0 && writeAll(fd, bytes);
+      struct stat written {};
+      if (ok && fstat(fd, &written) == 0 && S_ISREG(written.st_mode)) {
+        ok = ftruncate(fd, static_cast<off_t>(bytes.size())) == 0;
+      }
       const int saved = errno;
-      if (fd >= 0) ok = close(fd) == 0 && ok;
+      ok = close(fd) == 0 && ok;
       if (!ok) return fail(i, std::strerror(saved != 0 ? saved : errno));
     }
   }

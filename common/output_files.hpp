@@ -11,8 +11,10 @@ namespace shadows {
 
 struct OutputTarget {
   enum class Kind {
-    Replace,  // a regular file (new or existing), links resolved: temporary, then rename
-    InPlace,  // an existing device or pipe (/dev/null, a FIFO): opened and written as it is
+    Replace,  // a regular file of ours (new, or ours with one name): temporary, then rename
+    InPlace,  // a device or pipe (/dev/null, a FIFO), or a regular file that is not ours alone
+              // (another owner, other hard links, a directory we cannot add to): written in
+              // place, not atomically
     Stream,   // the file or pipe that is already our standard output or error
   };
   Kind kind = Kind::Replace;

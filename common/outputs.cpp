@@ -5,6 +5,7 @@
 
 #include "context.hpp"
 #include "json.hpp"
+#include "output_files.hpp"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -134,14 +135,31 @@ int Runner::run() {
 }
 
 int Runner::runHeadless() {
-  initHeadless();
-  // Without --out the picture goes where ./run.sh puts them, out/<lesson>.png (git-ignored).
+  // Without --out the picture goes where ./run.sh puts them, out/<lesson>.png (git-ignored):
+  // checked against the other outputs like a given --out, before anything is rendered.
   std::string out = options_.out;
   if (out.empty()) {
     std::error_code ec;
     std::filesystem::create_directories("out", ec);
     out = "out/" + name_ + ".png";
+    OutputTarget picture, other;
+    if (const std::string why = resolveOutput(out, picture); !why.empty()) {
+      std::fprintf(stderr, "%s: cannot write '%s' (%s)\n", name_.c_str(), out.c_str(), why.c_str());
+      return 2;
+    }
+    for (const auto& [flag, path] :
+         {std::pair<const char*, const std::string*>{"--report", &options_.report},
+          {"--truth-out", &options_.truth_out},
+          {"--error-out", &options_.error_out}}) {
+      if (path->empty() || !resolveOutput(*path, other).empty()) continue;
+      if (other.identity == picture.identity && !picture.character_device) {
+        std::fprintf(stderr, "%s: %s names the default picture %s; give --out\n", name_.c_str(),
+                     flag, out.c_str());
+        return 2;
+      }
+    }
   }
+  initHeadless();
   renderFrame();  // warm-up: shader JIT and the first shadow map land here
   renderBaselineFrame();
   // A snapshot with the panel should show the error numbers, so measure them first.

@@ -34,7 +34,13 @@ class Welder {
   }
 
  private:
-  glm::ivec3 cellOf(const glm::vec3& p) const { return glm::ivec3(glm::floor(p / cell_)); }
+  // Clamped to what key() packs (21 bits a coordinate): a far corner of a tiny cell cannot
+  // overflow the conversion to int.
+  glm::ivec3 cellOf(const glm::vec3& p) const {
+    const glm::vec3 c =
+        glm::clamp(glm::floor(p / cell_), glm::vec3(-(1 << 20)), glm::vec3((1 << 20) - 1));
+    return glm::ivec3(c);
+  }
   static std::uint64_t key(const glm::ivec3& c) {
     const auto part = [](int v) { return static_cast<std::uint64_t>(v + (1 << 20)) & 0x1fffff; };
     return part(c.x) | part(c.y) << 21 | part(c.z) << 42;

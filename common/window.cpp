@@ -35,7 +35,10 @@ int Runner::runWindow() {
       std::fprintf(stderr, "GLFW: %s\n", printable(description).c_str());
     }
   });
-  if (!glfwInit()) return kNoWindow;
+  if (!glfwInit()) {
+    opening_error = nullptr;  // later errors (a headless fallback's) are printed, not kept
+    return kNoWindow;
+  }
   window_ = true;
   setGlfwContextHints();
   GLFWwindow* window = glfwCreateWindow(
@@ -44,6 +47,7 @@ int Runner::runWindow() {
     if (window_error_.empty()) window_error_ = std::string("no ") + (contextName() + 2);
     glfwTerminate();
     window_ = false;
+    opening_error = nullptr;
     return kNoWindow;
   }
   opening_error = nullptr;

@@ -86,8 +86,9 @@ void compareCounters(const Json& ref, const Json& own, const Json& unavailable,
 void compareReports(const Json& ref, const Json& own) {
   const std::string flavour = own.value("flavour", "?");
   if (own.value("gl_errors", -1) != 0) fail("report: gl_errors " + own["gl_errors"].dump());
-  const Json& e = own["error"];
-  const Json& r = ref["error"];
+  if (!own.contains("error") || !ref.contains("error")) return fail("report: no error block");
+  const Json& e = own.at("error");
+  const Json& r = ref.at("error");
   if (!e.is_object() || !r.is_object()) return fail("report: no error block");
   if (e["truth"] != r["truth"])
     fail("error/truth " + e["truth"].dump() + ", gl45 " + r["truth"].dump());

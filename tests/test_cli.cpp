@@ -291,6 +291,57 @@ TEST_F(Cli, AReportStaysJsonWhateverBytesItsStringsHold) {
   EXPECT_EQ(json["params"]["spot.image"], (dir / "\\xFF.png").string());
 }
 
+TEST_F(Cli, AReaderThatGoesAwayLeavesNoTemporaryBehind) {
+  // `| true` closes the pipe at once: the write fails (EPIPE, not a fatal signal), the run
+  // says so and removes the picture's temporary.
+  const Result r = run(kLesson, "--headless --size 64x48 --frames 1 --no-truth --out " +
+                                    (dir / "x.png").string() + " --report /dev/stdout | true; " +
+                                    "ls -a " + dir.string());
+  EXPECT_EQ(r.output.find(".shadows-"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "x.png")) << "the picture without its report";
+}
+
+TEST_F(Cli, AFifoNobodyReadsIsAFailureNotAHang) {
+  const fs::path fifo = dir / "r.json";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const Result r = run(kLesson,
+                       "--headless --size 64x48 --frames 1 --no-truth --out " +
+                           (dir / "x.png").string() + " --report " + fifo.string(),
+                       "timeout 60 ");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("no reader"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "x.png"));
+}
+
+TEST_F(Cli, AFileWithOtherNamesIsWrittenInPlaceSoAllNamesSeeIt) {
+  // Replacing the inode would leave the other hard link with the old bytes.
+  std::ofstream(dir / "r.json") << "old";
+  fs::create_hard_link(dir / "r.json", dir / "other.json");
+  const Result r =
+      run(kLesson, "--headless --size 64x48 --frames 1 --no-truth --out " +
+                       (dir / "x.png").string() + " --report " + (dir / "r.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(fs::hard_link_count(dir / "r.json"), 2u);
+  EXPECT_EQ(readReport(dir / "other.json")["lesson"], kLesson);
+}
+
+TEST_F(Cli, AnOutputOnTheDefaultPictureIsRefusedUpFront) {
+  // Without --out the picture is out/<lesson>.png: another output there would replace it.
+  fs::create_directories(dir / "out");
+  const std::string command = "cd " + dir.string() + " && " + std::string(SHADOWS_BINARY_DIR) +
+                              "/" + kLesson + " --headless --size 64x48 --truth-out out/" +
+                              kLesson + ".png 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::array<char, 4096> buffer{};
+  std::string output;
+  while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) output += buffer.data();
+  const int status = pclose(pipe);
+  EXPECT_EQ(WEXITSTATUS(status), 2) << output;
+  EXPECT_NE(output.find("default picture"), std::string::npos) << output;
+  EXPECT_TRUE(fs::is_empty(dir / "out"));
+}
+
 // ---------------------------------------------------------------- inputs never hang
 
 TEST_F(Cli, AFifoAsAnImageIsRefusedWithoutReadingIt) {

@@ -96,5 +96,16 @@ TEST(ReportFields, SizeAndPixelCountsNest) {
   EXPECT_EQ(json["gl_errors"], 0);
 }
 
+TEST(ReportFields, AnUncountedFieldIsNullNotALeftover) {
+  // 05's taps per fragment come from its counters: with pcf.count off there are none this
+  // frame, so the field is null, not the number an earlier frame left.
+  auto runner = startLesson("05_pcf_dithered", {"pcf.count=true"}, 96, 72);
+  runner->renderFrame();
+  EXPECT_TRUE(report(*runner)["taps_per_filtered_fragment"].is_number());
+  ASSERT_EQ(runner->params().set("pcf.count", "false"), "");
+  runner->renderFrame();
+  EXPECT_TRUE(report(*runner)["taps_per_filtered_fragment"].is_null());
+}
+
 }  // namespace
 }  // namespace shadows
