@@ -76,6 +76,16 @@ inline std::string label(const std::vector<std::string>& sets) {
   return text;
 }
 
+// Renders the lesson once with `sets` and measures it against the truth; a GL error fails.
+inline ErrorMetrics measureOnce(const std::string& lesson, const std::vector<std::string>& sets,
+                                int width = 320, int height = 240) {
+  auto runner = startLesson(lesson, sets, width, height);
+  runner->renderFrame();
+  const ErrorMetrics metrics = runner->measureError().metrics;
+  EXPECT_EQ(runner->glErrors(), 0) << label(sets);
+  return metrics;
+}
+
 // The lesson's --report, as the binary would write it, read by a real JSON parser (a report
 // that is not JSON fails the test), keys in the order written.
 inline nlohmann::ordered_json report(Runner& runner) {

@@ -33,10 +33,7 @@ Image render(const std::vector<std::string>& sets, int width = 320, int height =
 }
 
 ErrorMetrics measure(const std::vector<std::string>& sets) {
-  auto runner = startLesson(kLesson, sets);
-  runner->renderFrame();
-  const ErrorMetrics metrics = runner->measureError().metrics;
-  EXPECT_EQ(runner->glErrors(), 0);
+  const ErrorMetrics metrics = testing::measureOnce(kLesson, sets);
   EXPECT_EQ(metrics.nonfinite_pixels, 0);
   return metrics;
 }

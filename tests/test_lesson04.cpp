@@ -22,10 +22,7 @@ using testing::startLesson;
 const std::string kLesson = "04_bias_offset";
 
 ErrorMetrics measure(const std::vector<std::string>& sets, int width = 320, int height = 240) {
-  auto runner = startLesson(kLesson, sets, width, height);
-  runner->renderFrame();
-  EXPECT_EQ(runner->glErrors(), 0);
-  return runner->measureError().metrics;
+  return testing::measureOnce(kLesson, sets, width, height);
 }
 
 TEST(Lesson04, SnapshotMatchesTheGolden) {

@@ -18,10 +18,7 @@ std::vector<std::string> with(std::vector<std::string> sets, const std::vector<s
 }
 
 ErrorMetrics measure(const std::vector<std::string>& sets) {
-  auto runner = startLesson(kLesson, sets);
-  runner->renderFrame();
-  EXPECT_EQ(runner->glErrors(), 0) << label(sets);
-  return runner->measureError().metrics;
+  return testing::measureOnce(kLesson, sets);
 }
 
 TEST(Lesson06, SnapshotMatchesTheGolden) {

@@ -11,10 +11,7 @@ using testing::startLesson;
 const std::string kLesson = "08_atmospherics";
 
 ErrorMetrics measure(const std::vector<std::string>& sets) {
-  auto runner = startLesson(kLesson, sets);
-  runner->renderFrame();
-  EXPECT_EQ(runner->glErrors(), 0) << label(sets);
-  return runner->measureError().metrics;
+  return testing::measureOnce(kLesson, sets);
 }
 
 TEST(Lesson08, SnapshotMatchesTheGolden) {

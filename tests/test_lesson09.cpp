@@ -15,10 +15,7 @@ const std::string kLesson = "09_shadow_volumes";
 
 // Renders once and measures against the truth.
 ErrorMetrics measured(const std::vector<std::string>& sets, int w = 320, int h = 240) {
-  auto runner = startLesson(kLesson, sets, w, h);
-  runner->renderFrame();
-  const ErrorMetrics e = runner->measureError().metrics;
-  EXPECT_EQ(runner->glErrors(), 0) << label(sets);
+  const ErrorMetrics e = testing::measureOnce(kLesson, sets, w, h);
   EXPECT_GT(e.counted_pixels, 1000) << label(sets);
   return e;
 }
