@@ -139,8 +139,7 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
   // as /dev/null may take several.
   for (size_t i = 0; i < std::size(outputs); ++i) {
     for (size_t j = i + 1; j < std::size(outputs); ++j) {
-      const OutputTarget &a = outputs[i].target, &b = outputs[j].target;
-      if (a.identity.empty() || a.identity != b.identity || a.character_device) continue;
+      if (!outputs[i].target.sameFileAs(outputs[j].target)) continue;
       return std::string(outputs[i].flag) + " and " + outputs[j].flag + " name the same file '" +
              printable(*outputs[j].path) + "'";
     }

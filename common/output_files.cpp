@@ -171,7 +171,7 @@ bool OutputBatch::commit() {
     if (bytes.empty()) return fail(i, "nothing to write");
     if (std::string why = resolveOutput(path, targets[i]); !why.empty()) return fail(i, why);
     for (size_t j = 0; j < i; ++j) {
-      if (targets[j].identity == targets[i].identity && !targets[i].character_device) {
+      if (targets[i].sameFileAs(targets[j])) {
         return fail(i, "the same file as " + printable(files_[j].first));
       }
     }

@@ -22,6 +22,12 @@ struct OutputTarget {
   std::string identity;           // two outputs with the same identity are one file
   bool character_device = false;  // may be shared by several outputs (/dev/null)
   int stream_fd = -1;             // Stream: 1 or 2
+
+  // Whether two outputs would land in one file (only a character device such as /dev/null
+  // may take several).
+  bool sameFileAs(const OutputTarget& other) const {
+    return !identity.empty() && identity == other.identity && !character_device;
+  }
 };
 
 // Resolves `path` for writing: "" and `target` set, or one line saying why it cannot be an

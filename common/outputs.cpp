@@ -152,7 +152,7 @@ int Runner::runHeadless() {
           {"--truth-out", &options_.truth_out},
           {"--error-out", &options_.error_out}}) {
       if (path->empty() || !resolveOutput(*path, other).empty()) continue;
-      if (other.identity == picture.identity && !picture.character_device) {
+      if (picture.sameFileAs(other)) {
         std::fprintf(stderr, "%s: %s names the default picture %s; give --out\n", name_.c_str(),
                      flag, out.c_str());
         return 2;
