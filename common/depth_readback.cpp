@@ -14,6 +14,7 @@ void DepthReadback::declare(Params& p, bool linearChoice) {
   const int digits = digits_;
   light_.declareSize(p);
   light_.declareFit(p);
+  light_.trackCasterDistances();  // the report's and panel's step at the casters
   // 000: "frustum confined to objects of interest" is where few bits are enough.
   p.setDefaultFloat(p.at("shadow.fit"), 1.0);
   if (linearChoice) {

@@ -39,12 +39,14 @@ bool LightView::update(Frame& f, glm::ivec2 size, bool recreated, std::uint32_t 
   size_ = size;
   frustum_ = f.light.frustum(static_cast<float>(size.x) / static_cast<float>(size.y));
   fitted_ = fit_();
-  const Light& l = f.light;
-  const Bounds casters = f.scene.casterBounds(l.position, l.directional, l.direction);
-  if (!depthRange(l.view, casters, caster_distances_.x, caster_distances_.y)) {
-    caster_distances_ = glm::vec2(0.0f);
+  if (fitted_ || track_caster_distances_) {
+    const Light& l = f.light;
+    const Bounds casters = f.scene.casterBounds(l.position, l.directional, l.direction);
+    if (!depthRange(l.view, casters, caster_distances_.x, caster_distances_.y)) {
+      caster_distances_ = glm::vec2(0.0f);
+    }
+    if (fitted_) fitNearFar(l.view, casters, frustum_.directional, frustum_.near, frustum_.far);
   }
-  if (fitted_) fitNearFar(l.view, casters, frustum_.directional, frustum_.near, frustum_.far);
   projection_ = lightProjection(frustum_);
   view_ = f.light.view;
   f.light_view_projection = viewProjection();

@@ -35,7 +35,10 @@ class LightView {
   bool off() const { return off_; }
   bool fitted() const { return fitted_; }  // shadow.fit: near/far fitted to the casters
   // The casters' nearest and farthest distance along the light's axis (their bounds' corners),
-  // fitted or not: where a map's depth steps matter.
+  // fitted or not: where a map's depth steps matter. Kept up to date only after
+  // trackCasterDistances() (06/07 report them), so other lessons do not walk the casters'
+  // vertices every frame for nothing.
+  void trackCasterDistances() { track_caster_distances_ = true; }
   glm::vec2 casterDistances() const { return caster_distances_; }
   // The world size of one texel (along the map's height) at distance d along the light's
   // axis is x * d + y: a spot's texels grow with distance (x = 2 tan(fov/2) / rows, y = 0),
@@ -51,6 +54,7 @@ class LightView {
   glm::mat4 projection_{1.0f}, view_{1.0f};
   glm::ivec2 size_{0};
   glm::vec2 caster_distances_{0.0f};
+  bool track_caster_distances_ = false;
   bool off_ = false, fitted_ = false;
   IntParam size_param_, height_;
   BoolParam fit_, cache_, off_param_;
