@@ -71,21 +71,6 @@ std::vector<std::string> otherValues(const Param& p) {
   return values;
 }
 
-std::string currentText(const Param& p) {
-  switch (p.kind) {
-    case ParamKind::Choice:
-      return p.choice();
-    case ParamKind::Bool:
-      return p.value[0] != 0.0 ? "true" : "false";
-    case ParamKind::Vec3:
-      return format(p.value[0]) + "," + format(p.value[1]) + "," + format(p.value[2]);
-    case ParamKind::String:
-      return p.string_value;
-    default:
-      return format(p.value[0]);
-  }
-}
-
 // The settings in which a parameter acts, where the defaults are not one of them (each is
 // what the parameter's help or its lesson's README says).
 const std::vector<std::string> kNearLight = {"shadow.fit=false", "light.near=0.001"};
@@ -146,7 +131,7 @@ TEST_P(ParamEffects, EveryParameterChangesSomethingAndComesBack) {
     auto runner = startLesson(lesson, context, 80, 60);
     for (const std::string& name : group) {
       Param& p = runner->params().at(name);
-      const std::string original = currentText(p);
+      const std::string original = p.text();  // as --set takes it
       const Signature before = signature(*runner);
       for (const std::string& value : otherValues(p)) {
         ASSERT_EQ(runner->params().set(name, value), "") << name << "=" << value;
