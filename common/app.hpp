@@ -17,6 +17,7 @@
 #include "scene.hpp"
 #include "shadow_math.hpp"
 #include "truth.hpp"
+#include "truth_job.hpp"
 
 namespace shadows {
 
@@ -137,6 +138,14 @@ struct RunOptions {
   bool hide_panel = false;    // a window without the panel (key H toggles it)
   bool truth = true;          // measure error against the ray-traced truth
   std::string out, report, truth_out, error_out;
+  // The truth's job and its trace as bytes (truth_job.hpp), and a trace to use instead of
+  // tracing (another tracer's answer to this very job, e.g. web/truth's).
+  std::string truth_job, truth_result, truth_from;
+  // Whether the run measures the truth: asked for, or an output that needs it.
+  bool truthAsked() const {
+    return truth || !truth_out.empty() || !error_out.empty() || !truth_job.empty() ||
+           !truth_result.empty() || !truth_from.empty();
+  }
   std::vector<std::string> sets;
   bool list_params = false, help = false;
 };
@@ -261,7 +270,11 @@ class Runner {
   void initImGuiGl();  // the ImGui GL backend (both window and headless)
   long long compiled_at_start_ = ProgramVariants::compiledTotal();
   std::unique_ptr<Gpu> gpu_;
-  std::shared_ptr<const Truth> truth_;  // shared with a job tracing on another thread
+  // Embree (or a page's JavaScript) for the current scene, shared with a trace running on
+  // another thread.
+  std::shared_ptr<const TruthTracer> truth_;
+  std::optional<TruthTrace> given_trace_;              // --truth-from
+  std::vector<std::uint8_t> job_bytes_, trace_bytes_;  // --truth-job, --truth-result
   ErrorState error_;
   std::string error_key_;
   Image error_image_, truth_image_;
@@ -275,8 +288,10 @@ class Runner {
     ErrorMetrics metrics;
     Image error_image, truth_image;
     Truth::AirResult air;
-    std::shared_ptr<const Truth> truth;
+    std::shared_ptr<const TruthTracer> truth;
+    std::vector<std::uint8_t> job_bytes, trace_bytes;  // when the outputs ask for them
   };
+  int runHeadlessOrWindow();
   TruthInputs gatherTruthInputs();                    // render thread
   static TruthResult traceTruth(TruthInputs inputs);  // any thread: no GL, no runner state
   void installTruth(TruthResult result);

@@ -51,6 +51,11 @@ const char* kUsage =
     "  --truth-out FILE.png the ray-traced truth (white lit, black shadowed)\n"
     "  --error-out FILE.png the mistakes: magenta false shadow, cyan false lit\n"
     "  --no-truth           skip the ray-traced truth (faster)\n"
+    "  --truth-job FILE     the truth's job: triangles, surfaces, light, air (bytes; see\n"
+    "                       web/truth/README.md), for another tracer to trace\n"
+    "  --truth-result FILE  the trace the metrics came from (Embree's, or --truth-from's)\n"
+    "  --truth-from FILE    take the truth from a trace of this run's job (web/truth's)\n"
+    "                       instead of tracing it; a trace of another job is bad input\n"
     "  --help               this text\n"
     "exit codes: 0 ok, 1 runtime failure (no context, shader error, GL error), 2 bad input\n";
 
@@ -63,7 +68,8 @@ std::string outputProblem(const std::string& flag, const std::string& path, Outp
     return flag + ": cannot write '" + shown + "' (" + why + ")";
   }
   // A picture goes into a .png; a device or a pipe takes whatever it is given.
-  if (flag != "--report" && target.kind == OutputTarget::Kind::Replace) {
+  const bool picture = flag == "--out" || flag == "--truth-out" || flag == "--error-out";
+  if (picture && target.kind == OutputTarget::Kind::Replace) {
     std::string extension = std::filesystem::path(path).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -83,7 +89,9 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
   Output outputs[] = {{"--out", &o.out, {}},
                       {"--report", &o.report, {}},
                       {"--truth-out", &o.truth_out, {}},
-                      {"--error-out", &o.error_out, {}}};
+                      {"--error-out", &o.error_out, {}},
+                      {"--truth-job", &o.truth_job, {}},
+                      {"--truth-result", &o.truth_result, {}}};
   auto outputNamed = [&](const std::string& flag) -> Output* {
     for (Output& output : outputs) {
       if (flag == output.flag) return &output;
@@ -125,6 +133,9 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
       o.frames_given = true;
     } else if (arg == "--set") {
       why = readSet(args, o.sets);
+    } else if (arg == "--truth-from") {
+      if (!args.value(value)) return arg + ": expected a file name";
+      o.truth_from = value;
     } else if (Output* output = outputNamed(arg)) {
       if (!args.value(value)) return arg + ": expected a file name";
       if (why = outputProblem(arg, value, output->target); !why.empty()) return why;

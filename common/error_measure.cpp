@@ -68,19 +68,12 @@ struct Runner::TruthInputs {
   int width = 0, height = 0;
   std::vector<float> rendered;    // the lesson's visibility view
   std::vector<glm::vec4> shaded;  // its shaded picture in float (NaN and Inf kept)
-  SurfaceBuffer surface;          // what each pixel sees, from the runner's geometry pass
-  TruthLight light;
   std::string truth_name;
-  std::shared_ptr<const Truth> truth;  // null: build it from these triangles
-  std::vector<glm::vec3> positions;
-  std::vector<glm::uvec3> triangles;
-  float scene_radius = 0.0f;
-  // Lesson 08's air: its picture, the eye rays, and the medium (with its own spot texture).
-  std::optional<AirMedium> medium;
-  std::optional<SpotTexture> spot;
-  std::vector<float> air_rendered;
-  glm::vec3 eye{0.0f};
-  glm::mat4 inverse_view_projection{1.0f};
+  TruthJob job;  // what the tracer traces: surfaces, light, triangles, lesson 08's air
+  std::shared_ptr<const TruthTracer> truth;  // null: build one from the job's triangles
+  std::optional<TruthTrace> given;           // --truth-from: the trace, already made
+  bool keep_bytes = false;                   // --truth-job / --truth-result
+  std::vector<float> air_rendered;           // lesson 08's air light
 };
 
 Runner::TruthInputs Runner::gatherTruthInputs() {
@@ -104,7 +97,8 @@ Runner::TruthInputs Runner::gatherTruthInputs() {
   glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, in.shaded.data());
 
   // The surface seen by each pixel, from the runner's own geometry pass.
-  in.surface = {w, h, std::vector<glm::vec4>(n), std::vector<glm::vec4>(n)};
+  TruthJob& job = in.job;
+  job.surface = {w, h, std::vector<glm::vec4>(n), std::vector<glm::vec4>(n)};
   gpu_->surface->bind();
   glViewport(0, 0, w, h);
   const float clear_position[4] = {0, 0, 0, -1};
@@ -122,36 +116,40 @@ Runner::TruthInputs Runner::gatherTruthInputs() {
   gpu_->gbuffer.set("uLightViewProjection", light_frustum_.value_or(glm::mat4(1.0f)));
   drawObjects(frame, gpu_->gbuffer, Objects::All, nullptr);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, in.surface.position.data());
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, job.surface.position.data());
   glReadBuffer(GL_COLOR_ATTACHMENT1);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, in.surface.normal.data());
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, job.surface.normal.data());
 
-  in.truth = truth_;
-  if (!in.truth) {
-    scene_.worldTriangles(in.positions, in.triangles);
-    in.scene_radius = scene_.bounds().radius();
-  }
-  in.light.position = light.position;
-  in.light.direction = light.direction;
-  in.light.directional = light.directional;
-  in.light.radius = truth_area_radius_;
-  in.light.samples = 64;
+  // The triangles always travel with the job (a tracer built for them is kept in truth_
+  // while the scene stays): a job is whole wherever it is traced.
+  scene_.worldTriangles(job.positions, job.triangles);
+  job.scene_radius = scene_.bounds().radius();
+  if (truth_ && truth_->sceneId() == job.sceneId()) in.truth = truth_;
+  in.given = given_trace_;
+  in.keep_bytes = !options_.truth_job.empty() || !options_.truth_result.empty();
+  job.light.position = light.position;
+  job.light.direction = light.direction;
+  job.light.directional = light.directional;
+  job.light.radius = truth_area_radius_;
+  job.light.samples = 64;
   in.truth_name = light.directional ? "directional" : "point";
   if (truth_area_radius_ > 0.0f) {
     char name[64];
-    std::snprintf(name, sizeof name, "area r=%g n=%d", truth_area_radius_, in.light.samples);
+    std::snprintf(name, sizeof name, "area r=%g n=%d", truth_area_radius_, job.light.samples);
     in.truth_name = name;
   }
   if (medium_) {
     // The lesson's air light alone, unscaled, against single scattering traced along the
     // very eye rays of its pixels.
-    in.medium = medium_;
-    // A copy of the spot texture: the lesson may load another while the truth is traced
-    // (traceTruth points the medium at it).
-    if (medium_->spot != nullptr) in.spot = *medium_->spot;
+    TruthJob::Air air;
+    air.medium = *medium_;
+    air.medium.spot = nullptr;
+    // A copy of the spot texture: the lesson may load another while the truth is traced.
+    if (medium_->spot != nullptr) air.spot = *medium_->spot;
+    air.eye = params_.at("camera.pos").v();
+    air.inverse_view_projection = glm::inverse(cameraProjection(w, h) * cameraView());
+    job.air = std::move(air);
     in.air_rendered = renderRed("air");
-    in.eye = params_.at("camera.pos").v();
-    in.inverse_view_projection = glm::inverse(cameraProjection(w, h) * cameraView());
   }
   measure_->setEnabled(was_enabled);
   return in;
@@ -160,19 +158,38 @@ Runner::TruthInputs Runner::gatherTruthInputs() {
 Runner::TruthResult Runner::traceTruth(TruthInputs in) {
   TruthResult out;
   out.key = in.key;
-  if (in.medium && in.spot) in.medium->spot = &*in.spot;  // this copy's, wherever it moved
-  out.truth = in.truth ? in.truth
-                       : std::make_shared<const Truth>(in.positions, in.triangles, in.scene_radius);
-  const Truth& truth_scene = *out.truth;
+  const TruthJob& job = in.job;
+  TruthTrace trace;
+  if (in.given) {
+    // Another tracer's answer: only to this very job (the same scene, view, light, size).
+    if (in.given->job_id != job.id()) {
+      throw TruthMismatch(
+          "--truth-from: the trace answers another job (other parameters, "
+          "size or scene); write the job again with --truth-job");
+    }
+    trace = std::move(*in.given);
+    if (trace.width != job.surface.width || trace.height != job.surface.height ||
+        trace.air.has_value() != job.air.has_value()) {
+      throw TruthMismatch("--truth-from: the trace does not fit its job (size or air)");
+    }
+  } else {
+    out.truth = in.truth ? in.truth : makeTruthTracer(job);
+    trace = out.truth->trace(job);
+  }
+  if (in.keep_bytes) {
+    trace.job_id = job.id();
+    out.job_bytes = serializeTruthJob(job);
+    out.trace_bytes = serializeTruthTrace(trace);
+  }
   const int w = in.width, h = in.height;
   const size_t n = static_cast<size_t>(w) * h;
-  const std::vector<float> truth = truth_scene.visibility(in.surface, in.light);
-  const std::vector<float> weight = Truth::facingWeight(in.surface, in.light);
+  const std::vector<float>& truth = trace.visibility;
+  const std::vector<float> weight = Truth::facingWeight(job.surface, job.light);
   ErrorMetrics& m = out.metrics;
   m = compareVisibility(in.rendered, truth, weight);
   // Every surface the eye sees writes its normal, counted or not; the sky keeps the clear 0.
   m.covered_pixels =
-      std::count_if(in.surface.normal.begin(), in.surface.normal.end(),
+      std::count_if(job.surface.normal.begin(), job.surface.normal.end(),
                     [](const glm::vec4& normal) { return glm::dot(normal, normal) > 0.0f; });
   m.truth = in.truth_name;
   // Non-finite pixels: where the visibility or any channel of the shaded picture is NaN or
@@ -202,9 +219,9 @@ Runner::TruthResult Runner::traceTruth(TruthInputs in) {
     out.truth_image.rgba[i * 4 + 3] = 255;
   }
   m.air = AirMetrics{};
-  if (in.medium) {
+  if (trace.air) {
     // The truth and error views then show the air.
-    out.air = truth_scene.airLight(in.surface, in.eye, in.inverse_view_projection, *in.medium);
+    out.air = std::move(*trace.air);
     m.air = compareAir(in.air_rendered, out.air);
     m.nonfinite_pixels += m.air.nonfinite;
     out.error_image = {w, h, airErrorImage(in.air_rendered, out.air.light)};
@@ -220,7 +237,9 @@ Runner::TruthResult Runner::traceTruth(TruthInputs in) {
 
 void Runner::installTruth(TruthResult result) {
   // A truth built for a scene that has changed since is not kept (its key says so).
-  if (!truth_ && result.key == errorKey()) truth_ = std::move(result.truth);
+  if (result.truth && result.key == errorKey()) truth_ = std::move(result.truth);
+  job_bytes_ = std::move(result.job_bytes);
+  trace_bytes_ = std::move(result.trace_bytes);
   error_.metrics = std::move(result.metrics);
   error_.valid = true;
   error_key_ = std::move(result.key);

@@ -1,6 +1,9 @@
-// The error metrics of a rendered shadow term against the truth, and the error picture.
+// The error metrics of a rendered shadow term (and lesson 08's air) against the truth, and
+// the error pictures. No Embree: a browser's build computes them from its own trace.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <stdexcept>
 
 #include "truth.hpp"
 
@@ -77,6 +80,85 @@ std::vector<std::uint8_t> errorImage(const std::vector<std::uint8_t>& shadedRgba
       px[1] = 255;
       px[2] = 255;
     }
+  }
+  return out;
+}
+
+std::vector<float> Truth::facingWeight(const SurfaceBuffer& surface, const TruthLight& light) {
+  if (surface.position.size() != static_cast<std::size_t>(surface.width) * surface.height) {
+    throw std::invalid_argument("facingWeight: surface buffer does not match its size");
+  }
+  std::vector<float> out(surface.position.size(), 0.0f);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    glm::vec3 p, n;
+    float ndotl;
+    if (countedPixel(surface, i, light, p, n, ndotl)) out[i] = std::min(ndotl, 1.0f);
+  }
+  return out;
+}
+
+AirMetrics compareAir(const std::vector<float>& rendered, const Truth::AirResult& truth) {
+  if (rendered.size() != truth.light.size()) {
+    throw std::invalid_argument("compareAir: buffers differ in size");
+  }
+  AirMetrics m;
+  double abs_sum = 0.0, sq_sum = 0.0, truth_sq = 0.0, truth_sum = 0.0;
+  for (size_t i = 0; i < rendered.size(); ++i) {
+    const double t = truth.light[i];
+    double r = rendered[i];
+    if (!std::isfinite(r)) {
+      ++m.nonfinite;
+      r = t + 1.0;  // wrong by a whole unit of light
+    }
+    if (r == 0.0 && t == 0.0) continue;
+    ++m.pixels;
+    abs_sum += std::abs(r - t);
+    sq_sum += (r - t) * (r - t);
+    truth_sq += t * t;
+    truth_sum += t;
+  }
+  m.truth_noise = truth.noise;
+  m.valid = true;
+  // Both dark everywhere (no dust, or no lit air in view): they agree, nothing to compare.
+  if (m.pixels == 0) m.note = "no air light in the picture or the truth";
+  if (m.pixels > 0) {
+    const double n = static_cast<double>(m.pixels);
+    m.mae = abs_sum / n;
+    m.truth_mean = truth_sum / n;
+    // A truth too dark to see (a light inside a caster, whose map leaks) makes the ratio
+    // huge and meaningless (163.7 was reported): no number, and why.
+    if (m.truth_mean < kAirRelFloor) {
+      m.rel_rmse = std::nan("");
+      char buf[160];
+      std::snprintf(buf, sizeof buf,
+                    "truth's mean air light %.2g is below %.2g (one 8-bit step): a ratio to it "
+                    "means nothing; see air_mae",
+                    m.truth_mean, kAirRelFloor);
+      m.rel_rmse_note = buf;
+    } else {
+      m.rel_rmse = std::sqrt(sq_sum / truth_sq);
+    }
+  }
+  return m;
+}
+
+std::vector<std::uint8_t> airErrorImage(const std::vector<float>& rendered,
+                                        const std::vector<float>& truth) {
+  float top = 1e-6f;
+  for (float t : truth) top = std::max(top, t);
+  std::vector<std::uint8_t> out(rendered.size() * 4, 0);
+  for (size_t i = 0; i < rendered.size(); ++i) {
+    const float r = std::isfinite(rendered[i]) ? rendered[i] : truth[i] + top;
+    // Signed error, 4x magnified against the brightest air: red too much, blue too little;
+    // a dim grey of the truth underneath so the shafts stay recognizable.
+    const float e = std::clamp(4.0f * (r - truth[i]) / top, -1.0f, 1.0f);
+    const float base = 0.25f * std::clamp(truth[i] / top, 0.0f, 1.0f);
+    out[i * 4 + 0] =
+        static_cast<std::uint8_t>(std::lround(255.0f * std::min(1.0f, base + std::max(e, 0.0f))));
+    out[i * 4 + 1] = static_cast<std::uint8_t>(std::lround(255.0f * base));
+    out[i * 4 + 2] =
+        static_cast<std::uint8_t>(std::lround(255.0f * std::min(1.0f, base + std::max(-e, 0.0f))));
+    out[i * 4 + 3] = 255;
   }
   return out;
 }

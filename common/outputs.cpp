@@ -115,6 +115,23 @@ void Runner::saveScreenshot(int width, int height, const std::string& file) {
 }
 
 int Runner::run() {
+  if (!options_.truth_from.empty()) {
+    try {
+      given_trace_ = readTruthTrace(options_.truth_from);
+    } catch (const std::invalid_argument& e) {
+      std::fprintf(stderr, "%s: --truth-from: %s\n", name_.c_str(), printable(e.what()).c_str());
+      return 2;
+    }
+  }
+  try {
+    return runHeadlessOrWindow();
+  } catch (const TruthMismatch& e) {
+    std::fprintf(stderr, "%s: %s\n", name_.c_str(), printable(e.what()).c_str());
+    return 2;
+  }
+}
+
+int Runner::runHeadlessOrWindow() {
   const char* display = std::getenv("DISPLAY");
   const bool has_display = display != nullptr && *display != '\0';
   if (options_.headless || (!has_display && !options_.force_window)) {
@@ -150,7 +167,9 @@ int Runner::runHeadless() {
     for (const auto& [flag, path] :
          {std::pair<const char*, const std::string*>{"--report", &options_.report},
           {"--truth-out", &options_.truth_out},
-          {"--error-out", &options_.error_out}}) {
+          {"--error-out", &options_.error_out},
+          {"--truth-job", &options_.truth_job},
+          {"--truth-result", &options_.truth_result}}) {
       if (path->empty() || !resolveOutput(*path, other).empty()) continue;
       if (picture.sameFileAs(other)) {
         std::fprintf(stderr, "%s: %s names the default picture %s; give --out\n", name_.c_str(),
@@ -174,10 +193,8 @@ int Runner::runHeadless() {
   // untimed, after the last timed frame.
   if (options_.panel) renderFrame(/*timed=*/false);
   const Image image = readImage();
-  // Asking for the truth or error picture asks for the truth, --no-truth or not.
-  if (options_.truth || !options_.truth_out.empty() || !options_.error_out.empty()) {
-    measureError();
-  }
+  // Asking for the truth or error picture (or its job) asks for the truth, --no-truth or not.
+  if (options_.truthAsked()) measureError();
   if (!writeOutputs(out, image)) return 1;
   const int errors = glErrors();
   std::printf("%-30s %dx%d  frame %7.2f ms", out.c_str(), options_.width, options_.height,
@@ -208,6 +225,11 @@ bool Runner::writeOutputs(const std::string& out, const Image& image) {
   if (!out.empty()) batch.add(out, encodePng(image));
   if (!options_.truth_out.empty()) batch.add(options_.truth_out, encodePng(truth_image_));
   if (!options_.error_out.empty()) batch.add(options_.error_out, encodePng(error_image_));
+  if (!options_.truth_job.empty())
+    batch.add(options_.truth_job, {job_bytes_.begin(), job_bytes_.end()});
+  if (!options_.truth_result.empty()) {
+    batch.add(options_.truth_result, {trace_bytes_.begin(), trace_bytes_.end()});
+  }
   if (!options_.report.empty()) {
     JsonWriter json;
     writeReport(json);

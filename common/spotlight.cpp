@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace shadows {
 
@@ -27,6 +28,12 @@ SpotTexture SpotTexture::builtin(float falloff, int size) {
 SpotTexture SpotTexture::fromPng(const std::string& path) {
   SpotTexture spot;
   spot.image_ = readPng(path);
+  return spot;
+}
+
+SpotTexture SpotTexture::fromImage(Image image) {
+  SpotTexture spot;
+  spot.image_ = std::move(image);
   return spot;
 }
 

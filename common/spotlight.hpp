@@ -18,6 +18,8 @@ class SpotTexture {
   static SpotTexture builtin(float falloff, int size = 256);
   // A PNG (rows bottom-up); throws std::runtime_error naming the file.
   static SpotTexture fromPng(const std::string& path);
+  // Any image (a truth job's copy).
+  static SpotTexture fromImage(Image image);
   static bool isBuiltin(const std::string& path) { return path == "builtin"; }
 
   // The light at texture coordinates (s, t) in [0, 1]² (0 outside), as the GPU's NEAREST

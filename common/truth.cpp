@@ -2,6 +2,7 @@
 #include "truth.hpp"
 
 #include "sample_hash.hpp"
+#include "truth_job.hpp"
 
 #include <embree3/rtcore.h>
 
@@ -92,37 +93,6 @@ void checkSurface(const SurfaceBuffer& s) {
   }
 }
 
-// Unit vector toward the light used for N.L; false when undefined.
-bool lightVector(const TruthLight& light, const glm::vec3& p, glm::vec3& l) {
-  if (light.directional) {
-    l = -light.direction;
-  } else {
-    l = light.position - p;
-  }
-  const float len = glm::length(l);
-  if (!(len > 0.0f) || !std::isfinite(len)) return false;
-  l /= len;
-  return true;
-}
-
-// The single definition of a counted pixel, shared by visibility() and facingWeight() so
-// their masks agree exactly. Outputs the surface point, unit normal and N.L.
-bool countedPixel(const SurfaceBuffer& s, std::size_t i, const TruthLight& light, glm::vec3& p,
-                  glm::vec3& n, float& ndotl) {
-  const glm::vec4 pw = s.position[i];
-  if (!(pw.w >= 0.0f)) return false;  // also rejects NaN
-  p = glm::vec3(pw);
-  n = glm::vec3(s.normal[i]);
-  if (!finite3(p) || !finite3(n)) return false;
-  const float len = glm::length(n);
-  if (!(len > 0.0f)) return false;
-  n /= len;
-  glm::vec3 l;
-  if (!lightVector(light, p, l)) return false;
-  ndotl = glm::dot(n, l);
-  return ndotl > 0.0f;
-}
-
 }  // namespace
 
 struct Truth::Impl {
@@ -152,8 +122,7 @@ Truth::Truth(const std::vector<glm::vec3>& positions, const std::vector<glm::uve
              float sceneRadius)
     : impl_(std::make_unique<Impl>()) {
   if (!std::isfinite(sceneRadius)) throw std::invalid_argument("Truth: sceneRadius not finite");
-  // Relative offset: an absolute epsilon is wrong for either tiny or huge scenes.
-  ray_offset_ = 1e-4f * std::max(sceneRadius, 1e-3f);
+  ray_offset_ = rayOffsetFor(sceneRadius);
 
   if (positions.size() > std::numeric_limits<std::uint32_t>::max()) {
     throw std::invalid_argument("Truth: too many vertices for 32-bit indices");
@@ -352,15 +321,41 @@ bool Truth::unoccluded(const glm::vec3& o, const glm::vec3& dir, float tfar) con
   return ray.tfar >= 0.0f;  // Embree sets tfar to -inf on a hit
 }
 
-std::vector<float> Truth::facingWeight(const SurfaceBuffer& surface, const TruthLight& light) {
-  checkSurface(surface);
-  std::vector<float> out(surface.position.size(), 0.0f);
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    glm::vec3 p, n;
-    float ndotl;
-    if (countedPixel(surface, i, light, p, n, ndotl)) out[i] = std::min(ndotl, 1.0f);
+namespace {
+
+// The native tracer of a job: one Embree scene of its triangles.
+class EmbreeTracer final : public TruthTracer {
+ public:
+  explicit EmbreeTracer(const TruthJob& job)
+      : scene_id_(job.sceneId()), truth_(job.positions, job.triangles, job.scene_radius) {}
+
+  TruthTrace trace(const TruthJob& job) const override {
+    if (job.sceneId() != scene_id_) {
+      throw std::invalid_argument("EmbreeTracer: the job is for another scene");
+    }
+    TruthTrace out;
+    out.width = job.surface.width;
+    out.height = job.surface.height;
+    out.visibility = truth_.visibility(job.surface, job.light);
+    if (job.air) {
+      AirMedium medium = job.air->medium;
+      medium.spot = job.air->spot ? &*job.air->spot : nullptr;
+      out.air =
+          truth_.airLight(job.surface, job.air->eye, job.air->inverse_view_projection, medium);
+    }
+    return out;
   }
-  return out;
+  std::uint64_t sceneId() const override { return scene_id_; }
+
+ private:
+  std::uint64_t scene_id_;
+  Truth truth_;
+};
+
+}  // namespace
+
+std::shared_ptr<const TruthTracer> makeTruthTracer(const TruthJob& job) {
+  return std::make_shared<EmbreeTracer>(job);
 }
 
 }  // namespace shadows

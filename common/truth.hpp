@@ -2,6 +2,7 @@
 // error metrics that compare a lesson's visibility image against it. No GL in here.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
@@ -44,6 +45,13 @@ struct AirMedium {
   glm::vec3 light_direction{0.0f, -1.0f, 0.0f};  // unit, from the light into the scene
 };
 
+// The single definition of a counted pixel (truth_job.cpp), shared by every tracer and by
+// facingWeight() so their masks agree exactly: a surface (position.w >= 0: the geometry pass
+// already left out what lies outside the light's frustum), finite, whose normal faces the
+// light (N.L > 0). Outputs the surface point, unit normal and N.L.
+bool countedPixel(const SurfaceBuffer& s, std::size_t i, const TruthLight& light, glm::vec3& p,
+                  glm::vec3& n, float& ndotl);
+
 // Value meaning "not counted" (no surface, or facing away from the light) in visibility images.
 inline constexpr float kNotCounted = -1.0f;
 
@@ -61,10 +69,13 @@ class Truth {
   // Deterministic: the same inputs give bit-identical output, whatever the thread count.
   std::vector<float> visibility(const SurfaceBuffer& surface, const TruthLight& light) const;
 
-  // N.L per pixel (0 where not counted); the weight of shade_mae.
+  // N.L per pixel (0 where not counted); the weight of shade_mae (error_metrics.cpp: no
+  // Embree, a browser's build has it too).
   static std::vector<float> facingWeight(const SurfaceBuffer& surface, const TruthLight& light);
 
   float rayOffset() const { return ray_offset_; }
+  // Relative, not absolute: an absolute epsilon is wrong for either tiny or huge scenes.
+  static float rayOffsetFor(float sceneRadius) { return 1e-4f * std::max(sceneRadius, 1e-3f); }
 
   // True when nothing blocks the ray from `origin` along the unit `direction` up to `tfar`.
   bool unoccluded(const glm::vec3& origin, const glm::vec3& direction, float tfar) const;

@@ -96,7 +96,8 @@ int Runner::runWindow() {
   // for and exits: that is how the tests check the real window path under xvfb.
   const bool scripted = options_.frames_given || !options_.out.empty() ||
                         !options_.report.empty() || !options_.truth_out.empty() ||
-                        !options_.error_out.empty();
+                        !options_.error_out.empty() || !options_.truth_job.empty() ||
+                        !options_.truth_result.empty();
   int frames_left = scripted ? options_.frames + 1 : -1;
   long long frame_number = 0;
   bool outputs_failed = false;
@@ -172,9 +173,7 @@ int Runner::runWindow() {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
         glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-        if (options_.truth || !options_.truth_out.empty() || !options_.error_out.empty()) {
-          measureError();
-        }
+        if (options_.truthAsked()) measureError();
         outputs_failed = !writeOutputs(options_.out, image);
       }
     }
