@@ -8,8 +8,10 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
 #include <string>
@@ -163,12 +165,15 @@ INSTANTIATE_TEST_SUITE_P(
                       "--frames 0", "--frames -3", "--backend vulkan",
                       "--out /nonexistent/dir/x.png", "--report /nonexistent/r.json",
                       "--error-out /proc/none/e.png", "--truth-out", "--out /tmp/x.jpg",
-                      "--error-out /tmp/e.bmp", "--set shadow.height=1", kLongName.c_str()));
+                      "--error-out /tmp/e.bmp", "--set shadow.height=1", kLongName.c_str(),
+                      "--truth-job", "--truth-result /nonexistent/t", "--truth-from",
+                      "--truth-from /nonexistent/t.trace", "--truth-from /tmp"));
 
 TEST_F(Cli, AnOutputThatFailsLeavesNoneOfTheOthersAndSaysWhich) {
   // /dev/full accepts the open and fails the write: the report, truth or error picture
   // cannot be written, so the picture written before it must not stay either.
-  for (const char* flag : {"--report", "--truth-out", "--error-out"}) {
+  for (const char* flag :
+       {"--report", "--truth-out", "--error-out", "--truth-job", "--truth-result"}) {
     const std::string out = (dir / "x.png").string();
     const Result r =
         run(kLesson, "--headless --size 64x48 --frames 1 --out " + out + " " + flag + " /dev/full");
@@ -176,6 +181,78 @@ TEST_F(Cli, AnOutputThatFailsLeavesNoneOfTheOthersAndSaysWhich) {
     EXPECT_NE(r.output.find("cannot write /dev/full"), std::string::npos) << r.output;
     EXPECT_TRUE(dirIsEmpty()) << flag << ": a partial set of outputs was left";
   }
+}
+
+std::vector<std::uint8_t> readBytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// --truth-job and --truth-result write what another tracer needs and what Embree answered;
+// --truth-from measures against a trace of the same job instead of tracing, through the same
+// metrics, and refuses a trace of another job.
+TEST_F(Cli, TheTruthJobAndItsTraceGoOutAndComeBack) {
+  const std::string base = "--headless --size 96x72 --frames 1 --out " + (dir / "x.png").string();
+  const fs::path job = dir / "job", trace = dir / "embree.trace", report = dir / "a.json";
+  Result r = run(kLesson, base + " --truth-job " + job.string() + " --truth-result " +
+                              trace.string() + " --report " + report.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::vector<std::uint8_t> trace_bytes = readBytes(trace), job_bytes = readBytes(job);
+  ASSERT_GT(job_bytes.size(), 16u);
+  EXPECT_EQ(std::string(job_bytes.begin(), job_bytes.begin() + 4), "SHTJ");
+  // Magic, version, job id, 96x72, no air, padding, noise, one float per pixel.
+  ASSERT_EQ(trace_bytes.size(), 40u + 4u * 96 * 72);
+  EXPECT_EQ(std::string(trace_bytes.begin(), trace_bytes.begin() + 4), "SHTR");
+  // The trace names its job: the id the job carries after its magic and version.
+  EXPECT_TRUE(
+      std::equal(trace_bytes.begin() + 8, trace_bytes.begin() + 16, readBytes(job).begin() + 8));
+
+  // The same trace back: the same numbers, and it is what was used.
+  const fs::path again = dir / "again.trace", report2 = dir / "b.json";
+  r = run(kLesson, base + " --truth-from " + trace.string() + " --truth-result " + again.string() +
+                       " --report " + report2.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(readBytes(again), trace_bytes);
+  EXPECT_EQ(readReport(report2)["error"], readReport(report)["error"]);
+
+  // A different trace of the same job: the metrics follow it (lit and shadowed swapped).
+  std::vector<std::uint8_t> swapped = trace_bytes;
+  int counted = 0;
+  for (size_t at = 40; at < swapped.size(); at += 4) {
+    float v;
+    std::memcpy(&v, &swapped[at], 4);
+    if (v < 0.0f) continue;
+    ++counted;
+    v = 1.0f - v;
+    std::memcpy(&swapped[at], &v, 4);
+  }
+  ASSERT_GT(counted, 100);
+  std::ofstream(dir / "swapped.trace", std::ios::binary)
+      .write(reinterpret_cast<const char*>(swapped.data()), static_cast<long>(swapped.size()));
+  const fs::path report3 = dir / "c.json";
+  r = run(kLesson, base + " --truth-from " + (dir / "swapped.trace").string() + " --report " +
+                       report3.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json a = readReport(report)["error"], c = readReport(report3)["error"];
+  EXPECT_EQ(c["counted_pixels"], a["counted_pixels"]);
+  EXPECT_GT(c["false_shadow_pct"].get<double>() + c["false_lit_pct"].get<double>(), 50.0) << c;
+
+  // Another job (the eye moved): bad input, one line, nothing written.
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "embree.trace", std::ios::binary)
+      .write(reinterpret_cast<const char*>(trace_bytes.data()),
+             static_cast<long>(trace_bytes.size()));
+  r = run(kLesson, base + " --set camera.fov=40 --truth-from " + trace.string() + " --report " +
+                       report.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("another job"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "x.png"));
+  EXPECT_FALSE(fs::exists(report));
+  // A job is not a trace.
+  r = run(kLesson, base + " --truth-from " + trace.string() + "x");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
 }
 
 TEST_F(Cli, TwoOutputsIntoOneFileAreRefused) {
