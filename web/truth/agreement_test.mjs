@@ -6,19 +6,36 @@
 // the error numbers of both come from the same C++ metrics. Passes when the visibility is
 // equal on >= 99.9 % of counted pixels (either tracer's), the air light on as many lit
 // pixels, and every error number agrees within 0.05 points.
-//   node web/truth/agreement_test.mjs BUILD_DIR LESSON [--size WxH]
+// With --seam SEAM.cjs the job goes through the browser's seam instead (common/truth_job_web.cpp
+// built with emscripten as tests/web/truth_seam.cpp: C++ hands the job's bytes to truth.mjs and
+// takes the trace back), the path a page takes.
+//   node web/truth/agreement_test.mjs BUILD_DIR LESSON [--size WxH] [--seam SEAM.cjs]
 import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join } from 'node:path';
+import { join, resolve } from 'node:path';
+import { createRequire } from 'node:module';
+import { installTruth } from './page.mjs';
 import { parseJob, parseTrace, serializeTrace, traceTruth } from './truth.mjs';
 
 const [buildDir, lesson, ...rest] = process.argv.slice(2);
+const option = (name, fallback) => {
+  const at = rest.indexOf(name);
+  return at >= 0 ? rest[at + 1] : fallback;
+};
 if (!buildDir || !lesson) {
-  console.error('usage: agreement_test.mjs BUILD_DIR LESSON [--size WxH]');
+  console.error('usage: agreement_test.mjs BUILD_DIR LESSON [--size WxH] [--seam SEAM.cjs]');
   process.exit(2);
 }
-const size = rest[0] === '--size' ? rest[1] : '160x120';
+const size = option('--size', '160x120');
+const seamPath = option('--seam', null);
+// The seam's program (emscripten's MODULARIZE factory, CommonJS), instantiated once with the
+// page's JavaScript tracer installed. Its wasm is handed over as bytes: emscripten 3.1.6 would
+// fetch() a file path, which node's fetch refuses.
+const seam = seamPath
+  ? await createRequire(import.meta.url)(resolve(seamPath))(
+      installTruth({ wasmBinary: readFileSync(seamPath.replace(/\.c?js$/, '.wasm')) }))
+  : null;
 const MIN_EQUAL = 0.999;
 const MAX_POINTS = 0.05;
 const binary = join(buildDir, lesson);
@@ -69,9 +86,16 @@ try {
                '--truth-job', file('job'), '--truth-result', file('embree.trace')]);
     const job = parseJob(readFileSync(file('job')));
     const started = process.hrtime.bigint();
-    const web = traceTruth(job);
+    let web;
+    if (seam) {
+      const status = seam.callMain([file('job'), file('web.trace')]);
+      if (status !== 0) throw new Error(`the seam's program exited ${status}`);
+      web = parseTrace(readFileSync(file('web.trace')));
+    } else {
+      web = traceTruth(job);
+      writeFileSync(file('web.trace'), serializeTrace(job, web));
+    }
     const ms = Number(process.hrtime.bigint() - started) / 1e6;
-    writeFileSync(file('web.trace'), serializeTrace(job, web));
     runLesson([...sets, '--out', file('b.png'), '--report', file('web.json'),
                '--truth-from', file('web.trace'), '--truth-result', file('used.trace')]);
 
@@ -121,7 +145,7 @@ try {
     }
     console.log(`${lesson} [${name}] truth ${a.truth}: visibility equal on ${(100 * visShare).toFixed(3)} % ` +
                 `of ${counted} counted pixels${airNote}; error numbers within ${worst.toFixed(4)} points; ` +
-                `web trace ${ms.toFixed(0)} ms`);
+                `web trace ${ms.toFixed(0)} ms${seam ? ' through the wasm seam' : ''}`);
     for (const p of problems) console.log(`  FAIL: ${p}`);
     failures += problems.length;
   }
