@@ -45,6 +45,8 @@ class Atmospherics final : public Lesson {
     early_reject_ =
         p.addBool("air.early_reject", true,
                   "slice fragments behind surfaces fail the depth test before they are shaded");
+    downsample_ = p.addInt("air.downsample", 2, 1, 4,
+                           "air at 1/N of the width and height, brought back by surface depth");
     // A missing or broken file is bad input, named.
     image_ = p.addString("spot.image", "builtin",
                          "builtin (a round spot) or the path of a PNG to project")
@@ -64,6 +66,12 @@ class Atmospherics final : public Lesson {
         ProgramVariants(lessonFile(LESSON_DIR, "room.vert"), lessonFile(LESSON_DIR, "room.frag"));
     slice_programs_ =
         ProgramVariants(lessonFile(LESSON_DIR, "slice.vert"), lessonFile(LESSON_DIR, "slice.frag"));
+    depth_program_ =
+        ProgramVariants(lessonFile(LESSON_DIR, "room.vert"), commonShaderDir() / "depth_only.frag");
+    air_depth_program_ = ProgramVariants(lessonFile(LESSON_DIR, "room.vert"),
+                                         lessonFile(LESSON_DIR, "air_depth.frag"));
+    upsample_program_ = ProgramVariants(commonShaderDir() / "fullscreen.vert",
+                                        lessonFile(LESSON_DIR, "air_upsample.frag"));
   }
   ~Atmospherics() override {
     if (empty_vao_ != 0) glDeleteVertexArrays(1, &empty_vao_);
@@ -107,7 +115,13 @@ class Atmospherics final : public Lesson {
   }
 
   void panel(Frame&) override {
-    ImGui::Text("slices %d over view depth %.2f .. %.2f (%s)", slices_drawn_, near_, far_,
+    // Which air is on screen: the preview while input moves, the full air once it rests.
+    const std::string resolution =
+        downsample_drawn_ == 1 ? "full" : "1/" + std::to_string(downsample_drawn_);
+    ImGui::Text("air: %s, %d slices at %s resolution",
+                preview_ ? "PREVIEW while moving" : "full quality", slices_drawn_,
+                resolution.c_str());
+    ImGui::Text("slices over view depth %.2f .. %.2f (%s)", near_, far_,
                 bound_() ? "the cone's" : "the whole view");
     ImGui::Text("slice fragments passed %s", countText(passed_).c_str());
   }
@@ -116,6 +130,8 @@ class Atmospherics final : public Lesson {
     json.value("air_depth_near", near_);
     json.value("air_depth_far", far_);
     json.value("air_step", step_);
+    json.value("air_downsample", downsample_drawn_);
+    json.value("air_quality", std::string(preview_ ? "preview" : "full"));
   }
 
  private:
@@ -208,8 +224,18 @@ class Atmospherics final : public Lesson {
     }
   }
 
+  // The air at 1/k of the picture's width and height (k = air.downsample): the slices shade k²
+  // times fewer fragments; at k = 1 they blend straight into the picture.
   void drawSlices(Frame& f, const glm::mat4& cone) {
-    drawSlicesTimed(f, cone);
+    // While the camera or a slider moves in a window, a cheaper preview (kPreviewDownsample):
+    // the same slices, so dragging air.slices still shows what it does.
+    preview_ = f.input_moving && downsample_() < kPreviewDownsample;
+    const int k = preview_ ? kPreviewDownsample : downsample_();
+    downsample_drawn_ = k;
+    slices_drawn_ = slices_();
+    sliceBounds(f, cone, slices_drawn_);
+    if (k > 1) airDepth(f, k, !preview_);
+    drawSlicesTimed(f, cone, k);
     // Fragments the slices rasterized (llvmpipe counts them before any test), and of those
     // the ones shaded: only those that passed the depth test when it runs first.
     if (const PassWork* work = f.measure.frameWork("air")) {
@@ -219,12 +245,117 @@ class Atmospherics final : public Lesson {
       f.measure.count("air_fragments_skipped",
                       rasterized && shaded ? std::optional(*rasterized - *shaded) : std::nullopt);
     }
+    if (k > 1) upsampleAir(f, k, !preview_);
   }
 
-  void drawSlicesTimed(Frame& f, const glm::mat4& cone) {
+  // The low-res air's targets: the air (rgb) with the view depth its rays end at (alpha) and
+  // their depth buffer, at 1/k; and, for the depth-aware upsample, the picture's own depth
+  // drawn again (the picture may be the window's, whose depth no shader can read).
+  void ensureLowRes(const Frame& f, int k) {
+    const int w = (f.width + k - 1) / k, h = (f.height + k - 1) / k;
+    if (low_ && low_->width == w && low_->height == h && low_->full_width == f.width &&
+        low_->full_height == f.height) {
+      return;
+    }
+    low_ = std::make_unique<LowRes>();
+    low_->width = w, low_->height = h, low_->full_width = f.width, low_->full_height = f.height;
+    low_->depth = Texture::depth(f.width, f.height, 24);
+    low_->depth_target.attachDepth(low_->depth);
+    low_->depth_target.check();
+    low_->air = Texture::color(w, h, GL_RGBA32F);  // the sum of many small terms, unrounded
+    low_->air.setFilter(GL_NEAREST);
+    low_->air_depth = Texture::depth(w, h, 24);
+    low_->air_target.attachColor(low_->air);
+    low_->air_target.attachDepth(low_->air_depth);
+    low_->air_target.check();
+  }
+
+  // From the picture's clip space to the low-res target's, where pixel (x, y) is centred on the
+  // ray of the picture's pixel (k x, k y): x' = s x + o w (the slices do the same in NDC).
+  glm::mat4 lowResClip(const Frame& f, int k, glm::vec2& scale, glm::vec2& offset) const {
+    const glm::vec2 full(f.width, f.height), low(low_->width, low_->height);
+    scale = full / (static_cast<float>(k) * low);
+    offset = (full - 1.0f + static_cast<float>(k)) / (static_cast<float>(k) * low) - 1.0f;
+    glm::mat4 m(1.0f);
+    m[0][0] = scale.x, m[1][1] = scale.y, m[3][0] = offset.x, m[3][1] = offset.y;
+    return m;
+  }
+
+  // The scene's depth where the low-res slices are tested against it, and at full resolution
+  // when the upsample weighs neighbours by it.
+  void airDepth(Frame& f, int k, bool depthAware) {
+    auto timing = f.measure.pass("air_depth");
+    ensureLowRes(f, k);
+    const glm::mat4 view_projection = f.projection * f.view;
+    const glm::vec2 near_far(f.scene.camera.near, f.scene.camera.far);
+    PassState{}.apply();
+    if (depthAware) {
+      low_->depth_target.bind();
+      glViewport(0, 0, f.width, f.height);
+      glClear(GL_DEPTH_BUFFER_BIT);
+      const Program& depth = depth_program_.get({});
+      depth.set("uViewProjection", view_projection);
+      if (scissorToSlices(f)) f.drawObjects(depth, Objects::All);
+      glDisable(GL_SCISSOR_TEST);
+    }
+    low_->air_target.bind();
+    glViewport(0, 0, low_->width, low_->height);
+    const float sky[4] = {0.0f, 0.0f, 0.0f, near_far.y};  // no air yet; rays end at the far plane
+    glClearBufferfv(GL_COLOR, 0, sky);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glm::vec2 scale, offset;
+    const Program& low = air_depth_program_.get({});
+    low.set("uViewProjection", lowResClip(f, k, scale, offset) * view_projection);
+    low.set("uNearFar", near_far);
+    f.drawObjects(low, Objects::All);
+  }
+
+  // The low-res air added to the picture (air_upsample.frag).
+  void upsampleAir(Frame& f, int k, bool depthAware) {
+    auto timing = f.measure.pass("air_upsample");
+    f.bindTarget();
+    PassState add;
+    add.depth_test = false;
+    add.depth_write = false;
+    add.blend = true;
+    add.blend_dst = GL_ONE;
+    add.apply();
+    const Program& program = upsample_program_.get({define("AIR_DEPTH_AWARE", depthAware)});
+    low_->air.bind(2);
+    low_->depth.bind(3);
+    program.set("uAir", 2);
+    program.set("uDepth", 3);
+    program.set("uFactor", k);
+    program.set("uNearFar", glm::vec2(f.scene.camera.near, f.scene.camera.far));
+    if (scissorToSlices(f)) drawTriangle(program);
+    glDisable(GL_SCISSOR_TEST);
+    PassState{}.apply();
+  }
+
+  // Scissors the picture to the slices' rectangles: no slice reaches a pixel outside them, so
+  // no air does, and neither the upsample nor its depth is needed there. False: none is left.
+  bool scissorToSlices(const Frame& f) const {
+    glm::vec2 lo(1.0f), hi(-1.0f);
+    for (const glm::vec4& r : rects_) {
+      if (r.x < r.z) lo = glm::min(lo, glm::vec2(r)), hi = glm::max(hi, glm::vec2(r.z, r.w));
+    }
+    const glm::vec2 size(f.width, f.height);
+    const glm::ivec2 from(glm::floor((lo + 1.0f) * 0.5f * size)),
+        to(glm::ceil((hi + 1.0f) * 0.5f * size));
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(from.x, from.y, std::max(to.x - from.x, 0), std::max(to.y - from.y, 0));
+    return from.x < to.x && from.y < to.y;
+  }
+
+  void drawTriangle(const Program& program) const {
+    program.use();
+    glBindVertexArray(empty_vao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    countDrawCall();
+  }
+
+  void drawSlicesTimed(Frame& f, const glm::mat4& cone, int k) {
     auto timing = f.measure.pass("air");
-    slices_drawn_ = slices_();
-    sliceBounds(f, cone, slices_drawn_);
     passed_ = 0;
     if (!(step_ > 0.0f)) return;  // the cone lies behind the eye
     const Program& slices =
@@ -236,6 +367,17 @@ class Atmospherics final : public Lesson {
     slices.set("uFar", far_);
     slices.set("uStep", step_);
     slices.set("uProjection", f.projection);
+    // Low-res pixel x (centre x + 1/2) is the ray of pixel k x (centre k x + 1/2): from the
+    // picture's normalized device x to the low-res target's.
+    glm::vec2 scale(1.0f), offset(0.0f);
+    if (k > 1) {
+      lowResClip(f, k, scale, offset);
+      low_->air_target.bind();
+      glViewport(0, 0, low_->width, low_->height);
+    }
+    slices.set("uNdcScale", scale);
+    slices.set("uNdcOffset", offset);
+    slices.set("uPixelScale", k);
     slices.set("uInverseView", glm::inverse(f.view));
     // tan(fov/2) across and up: what the perspective matrix divides by.
     slices.set("uTanHalfFov", 1.0f / glm::vec2(f.projection[0][0], f.projection[1][1]));
@@ -261,11 +403,20 @@ class Atmospherics final : public Lesson {
     f.measure.count("air_slices", slices_drawn_);
     f.measure.count("air_fragments_passed", passed_);
     PassState{}.apply();
+    f.bindTarget();
   }
 
   ShadowMap map_;
-  ProgramVariants room_, slice_programs_;
-  IntParam slices_;
+  ProgramVariants room_, slice_programs_, depth_program_, air_depth_program_, upsample_program_;
+  struct LowRes {
+    int width = 0, height = 0, full_width = 0, full_height = 0;
+    Texture depth;  // the picture's depth, full resolution
+    Framebuffer depth_target;
+    Texture air, air_depth;  // the air and the depth it is tested against, at 1/k
+    Framebuffer air_target;
+  };
+  std::unique_ptr<LowRes> low_;
+  IntParam slices_, downsample_;
   FloatParam density_, falloff_, dimming_;
   BoolParam jitter_, bound_, early_reject_;
   StringParam image_;
@@ -276,7 +427,9 @@ class Atmospherics final : public Lesson {
   SamplesPassedQuery query_;
   std::vector<glm::vec4> rects_;  // per slice, back to front
   Buffer rects_buffer_;           // their uniform block (slice.vert)
-  int slices_drawn_ = 0;
+  static constexpr int kPreviewDownsample = 8;
+  bool preview_ = false;
+  int slices_drawn_ = 0, downsample_drawn_ = 1;
   float near_ = 0.0f, far_ = 0.0f, step_ = 0.0f;
   std::optional<long long> passed_ = 0;  // empty: this context cannot count them
 };

@@ -19,6 +19,7 @@ uniform mat4 uSpotMatrix;    // B * P_cone * V_light
 uniform float uStep;         // view depth between slices
 uniform float uDensity;
 uniform vec3 uAirColor;
+uniform int uPixelScale;     // k: low-res pixel (x, y) is the ray of pixel (k x, k y)
 out vec4 outColor;
 
 uint hash(uint x) {  // lowbias32, as the truth's sampling
@@ -40,7 +41,9 @@ void main() {
   float depth = vDepth;
 #if AIR_JITTER
   // A different depth inside the slice's interval for every pixel: noise instead of bands.
-  uint h = hash(uint(gl_FragCoord.x) * 73856093u ^ uint(gl_FragCoord.y) * 19349663u ^
+  // The full picture's pixel, so the low-res air has the same jitter as the full-res air there.
+  uvec2 pixel = uvec2(gl_FragCoord.xy) * uint(uPixelScale);
+  uint h = hash(pixel.x * 73856093u ^ pixel.y * 19349663u ^
                 uint(vSlice) * 83492791u);
   depth += (float(h >> 8) * (1.0 / 16777216.0) - 0.5) * uStep;
 #endif

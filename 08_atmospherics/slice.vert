@@ -8,6 +8,10 @@ layout(std140) uniform Rects {  // a uniform block: 256 vectors are more than ES
 uniform float uFar;
 uniform float uStep;
 uniform mat4 uProjection;
+// Air at 1/k resolution: from the full picture's normalized device coordinates to the low-res
+// target's, so that low-res pixel (x, y) is centred on the ray of pixel (k x, k y). 1, 0 at full.
+uniform vec2 uNdcScale;
+uniform vec2 uNdcOffset;
 out vec2 vNdc;
 flat out float vDepth;
 flat out int vSlice;
@@ -18,5 +22,5 @@ void main() {
   vDepth = uFar - (float(gl_InstanceID) + 0.5) * uStep;
   vSlice = gl_InstanceID;
   vec4 plane = uProjection * vec4(0.0, 0.0, -vDepth, 1.0);
-  gl_Position = vec4(vNdc * plane.w, plane.z, plane.w);
+  gl_Position = vec4((vNdc * uNdcScale + uNdcOffset) * plane.w, plane.z, plane.w);
 }

@@ -1,11 +1,10 @@
 // Lesson 08's time-vs-error sweep for bench_sweep (bench/README.md).
 #include "sweep_spec.hpp"
 
-// Slices against the air's error: where more slices stop paying (the map's resolution or the
-// truth's own noise), with and without jitter, on two map sizes.
+// Slices against the air's resolution: where more slices stop paying, and what computing the
+// air at 1/2, 1/3 or 1/4 of the width and height (upsampled by depth) costs in error.
 SHADOWS_SWEEP({.scenes = {"room"},
-               .axes = {{"air.slices", {"4", "8", "16", "32", "48", "64", "96", "128"}},
-                        {"air.jitter", {"false", "true"}},
-                        {"shadow.size", {"256", "1024"}}},
+               .axes = {{"air.slices", {"16", "24", "32", "48", "64", "96", "128"}},
+                        {"air.downsample", {"1", "2", "3", "4"}}},
                .fixed = {"shadow.cache=false", "inset=false"},
                .plot_metrics = {"air_rel_rmse_pct", "air_mae"}});

@@ -311,6 +311,7 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
   frame.height = height;
   frame.target = target;
   frame.mode = mode;
+  frame.input_moving = input_moving_;
 
   // In a window the panel is drawn anew only when it may have changed (input, or every
   // quarter second for its numbers) and laid over the other frames from a texture: ImGui's

@@ -65,6 +65,9 @@ struct Frame {
   // its view "air" (the in-scattered light alone, unscaled, in red) and measures it against
   // Truth::airLight.
   std::optional<AirMedium> medium;
+  // A window while its camera or a slider moves (until input rests, as the truth waits): a
+  // lesson may draw a cheaper picture and say so. Never in a headless run.
+  bool input_moving = false;
 
   // The view as shader #defines: VIEW_SHADED 0, VIEW_VISIBILITY 1, ... for every view the
   // lesson has, and VIEW as the one to render (`#if VIEW == VIEW_VISIBILITY`).
@@ -136,6 +139,7 @@ struct RunOptions {
   bool frames_given = false;  // --frames on the command line: a window run stops after them
   bool panel = false;         // draw the ImGui panel into headless snapshots too
   bool hide_panel = false;    // a window without the panel (key H toggles it)
+  int orbit = 0;              // a window turns the camera this many degrees a frame, as a drag
   bool truth = true;          // measure error against the ray-traced truth
   std::string out, report, truth_out, error_out;
   // The truth's job and its trace as bytes (truth_job.hpp), and a trace to use instead of
@@ -182,6 +186,8 @@ class Runner {
   std::string costSummary() const;
   // Feeds ImGui a mouse state for the next frame (headless tests drive the panel this way).
   void setMouse(glm::vec2 position, bool leftDown);
+  // Whether input is moving (the window sets it each frame; tests may too): Frame::input_moving.
+  void setInputMoving(bool moving) { input_moving_ = moving; }
   // Computes visibility, truth and metrics for the current parameters.
   const ErrorState& measureError();
   // The same off the frame's critical path (the window): begin renders what the truth needs
@@ -259,6 +265,7 @@ class Runner {
   int runHeadless();
 
   std::string name_;
+  bool input_moving_ = false;
   std::unique_ptr<Lesson> lesson_;
   RunOptions options_;
   Params params_;

@@ -45,6 +45,8 @@ const char* kUsage =
     "                       through), devices or pipes (written in place), /dev/stdout\n"
     "  --panel              draw the ImGui panel into the headless picture too\n"
     "  --hide-panel         a window without the panel (the key H shows and hides it)\n"
+    "  --orbit DEG          in a window, turn the camera DEG degrees (1..90) around its\n"
+    "                       target every frame, as a mouse drag does (to time a moving window)\n"
     "  --set name=value     set a parameter (repeatable); see --list-params\n"
     "  --list-params        list every parameter: name, type, default, range, help\n"
     "  --report FILE.json   parameters, timings, work counters, error against the truth\n"
@@ -131,6 +133,8 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
     } else if (arg == "--frames") {
       why = readCount(args, o.frames, 100000);
       o.frames_given = true;
+    } else if (arg == "--orbit") {
+      why = readCount(args, o.orbit, 90);
     } else if (arg == "--set") {
       why = readSet(args, o.sets);
     } else if (arg == "--truth-from") {

@@ -20,6 +20,7 @@
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <map>
+#include <optional>
 
 namespace shadows {
 
@@ -91,6 +92,7 @@ int Runner::runWindow() {
   bool h_was_down = false;
   bool dragging = false;
   auto changed_at = std::chrono::steady_clock::now();
+  std::optional<std::chrono::steady_clock::time_point> moved_at;
   std::string last_key;
   // With an output or --frames, a windowed run renders --frames frames, writes what was asked
   // for and exits: that is how the tests check the real window path under xvfb.
@@ -127,6 +129,15 @@ int Runner::runWindow() {
       dragging = false;
     }
     last_x = x, last_y = y;
+    if (options_.orbit > 0) {  // a scripted drag: the same turn, without a mouse
+      Param& pos = params_.at("camera.pos");
+      const glm::vec3 target = params_.at("camera.target").v();
+      const glm::vec3 offset = pos.v() - target;
+      params_.setVec3(
+          pos, target + glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(float(options_.orbit)),
+                                              glm::vec3(0.0f, 1.0f, 0.0f)) *
+                                  glm::vec4(offset, 0.0f)));
+    }
     if (io.MouseWheel != 0.0f && !io.WantCaptureMouse) {
       Param& pos = params_.at("camera.pos");
       const glm::vec3 target = params_.at("camera.target").v();
@@ -148,9 +159,16 @@ int Runner::runWindow() {
       // visibility, shaded and geometry passes) takes the render thread.
       pollErrorMeasure();
       const std::string key = errorKey();
-      if (key != last_key) changed_at = std::chrono::steady_clock::now(), last_key = key;
-      const bool resting =
-          std::chrono::steady_clock::now() - changed_at > std::chrono::milliseconds(300);
+      const auto now = std::chrono::steady_clock::now();
+      // Input moves while the key changes (the first frame's key is no move) or a widget is
+      // held; a lesson may draw a cheaper picture then (Frame::input_moving).
+      if (key != last_key) {
+        if (!last_key.empty()) moved_at = now;
+        changed_at = now, last_key = key;
+      }
+      const bool resting = now - changed_at > std::chrono::milliseconds(300);
+      setInputMoving(ImGui::IsAnyItemActive() ||
+                     (moved_at && now - *moved_at <= std::chrono::milliseconds(300)));
       if (options_.truth && resting && key != error_key_ && !errorMeasureRunning() &&
           !ImGui::IsAnyItemActive()) {
         beginErrorMeasure();
