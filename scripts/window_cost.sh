@@ -25,13 +25,17 @@ for ((r = 1; r <= rounds; r++)); do
     flag=()
     [[ $mode == hidden ]] && flag=(--hide-panel)
     [[ $mode == moving ]] && flag=(--orbit 2)
-    xvfb-run -a -s "-screen 0 1024x768x24" "$binary" --window --no-truth --frames "$frames" \
-      "${flag[@]}" --out "$tmp/$mode.png" --report "$tmp/$mode-$r.json" >/dev/null
+    # The CPU seconds of the run (every thread, and the X server's), start-up included: on a
+    # machine others load, what the frames would take without them, at one core.
+    TIMEFORMAT='%U %S'
+    { time xvfb-run -a -s "-screen 0 1024x768x24" "$binary" --window --no-truth --frames "$frames" \
+      "${flag[@]}" --out "$tmp/$mode.png" --report "$tmp/$mode-$r.json" >/dev/null 2>&1; } \
+      2>"$tmp/$mode-$r.cpu"
   done
 done
-python3 - "$tmp" "$rounds" "${modes[@]}" <<'PY'
+python3 - "$tmp" "$rounds" "$frames" "${modes[@]}" <<'PY'
 import json, statistics, sys
-tmp, rounds, a, b = sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[4]
+tmp, rounds, frames, a, b = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4], sys.argv[5]
 ms = {m: [json.load(open(f"{tmp}/{m}-{r}.json"))["frame_ms"] for r in range(1, rounds + 1)]
       for m in (a, b)}
 for m, v in ms.items():
@@ -41,4 +45,9 @@ for m, v in ms.items():
 ratios = [x / y for x, y in zip(ms[a], ms[b])]
 print(f"{a} / {b} per round: " + " ".join(f"{x:.2f}" for x in ratios) +
       f"  median {statistics.median(ratios):.2f}x")
+for m in (a, b):
+    cpu = [1000 * sum(map(float, open(f"{tmp}/{m}-{r}.cpu").read().split())) / (frames + 1)
+           for r in range(1, rounds + 1)]
+    print(f"{m:7}: CPU per frame, start-up included: " + " ".join(f"{x:.1f}" for x in cpu) +
+          f"  median {statistics.median(cpu):.1f} ms")
 PY
