@@ -53,9 +53,14 @@ std::vector<std::string> otherValues(const Param& p) {
     case ParamKind::Bool:
       values.push_back(v != 0.0 ? "false" : "true");
       break;
-    case ParamKind::Int:
-      values.push_back(format(std::round(moved)));
+    case ParamKind::Int: {
+      // A narrow range (air.downsample, 1-4) rounds a tenth of it back to the default: one step.
+      const double step = std::round(moved) != v   ? std::round(moved)
+                          : p.max - v >= v - p.min ? v + 1.0
+                                                   : v - 1.0;
+      values.push_back(format(step));
       break;
+    }
     case ParamKind::Float:
       values.push_back(format(moved));
       break;
