@@ -38,6 +38,9 @@ struct Options {
   std::vector<std::string> sets;
   // --replot: run nothing, mark and plot this CSV.
   std::filesystem::path replot;
+  // --backend, --device: the headless context (common/context.hpp); empty: the default.
+  std::string backend;
+  int device = 0;
 };
 
 struct Config {

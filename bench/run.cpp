@@ -105,6 +105,8 @@ Runner& Bench::runnerFor(const std::string& lesson) {
     o.width = options_.width;
     o.height = options_.height;
     o.frames = options_.frames;
+    o.backend = options_.backend;
+    o.device = options_.device;
     runner_ = std::make_unique<Runner>(lesson, makeLesson(lesson), o);
     runner_->initHeadless();
     renderer_ = reinterpret_cast<const char*>(glGetString(GL_RENDERER));

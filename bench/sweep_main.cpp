@@ -19,6 +19,7 @@
 
 #include "arguments.hpp"
 #include "bench.hpp"
+#include "context.hpp"
 #include "text.hpp"
 
 namespace shadows::bench {
@@ -43,6 +44,8 @@ const char* kUsage =
     "                 frame's wall time\n"
     "  --set name=value  a lesson parameter for every configuration (repeatable), as the\n"
     "                 lessons' --set takes it; checked against every lesson the sweep renders\n"
+    "  --backend NAME, --device N  the headless context, as the lessons take them (a GPU\n"
+    "                 without a display: --backend egl-device --device N)\n"
     "  --no-plot      skip gnuplot\n"
     "  --replot FILE  run nothing: mark the fronts of a CSV bench_sweep wrote and plot it into\n"
     "                 DIR (the sweep: --lesson, else the CSV's lesson column)\n"
@@ -51,6 +54,7 @@ const char* kUsage =
 // Returns "" or what was wrong (exit 2). --size, --frames, --rounds and --set read and say
 // what is wrong as the lessons' own command line does (common/arguments.hpp).
 std::string parse(int argc, char** argv, Options& o, bool& all) {
+  bool device_given = false;
   for (Arguments args(argc, argv); args.next();) {
     const std::string& arg = args.flag();
     std::string v, why;
@@ -82,6 +86,12 @@ std::string parse(int argc, char** argv, Options& o, bool& all) {
         return "--plot-x wants cpu, min or median (got '" + v + "')";
       }
       o.plot_x = v;
+    } else if (arg == "--backend") {
+      args.value(v);
+      if (why = checkBackend(v); why.empty()) o.backend = v;
+    } else if (arg == "--device") {
+      why = readIndex(args, o.device, 63);
+      device_given = true;
     } else if (arg == "--no-plot") {
       o.plot = false;
     } else if (arg == "--replot") {
@@ -93,6 +103,9 @@ std::string parse(int argc, char** argv, Options& o, bool& all) {
     if (!why.empty()) return why;
   }
   if (all && !o.lessons.empty()) return "--all and --lesson exclude each other";
+  if (device_given && o.backend != "egl-device") {
+    return "--device chooses an EGL device: it needs --backend egl-device";
+  }
   if (o.smoke && o.quick) return "--smoke and --quick exclude each other";
   if (!o.replot.empty() && (all || o.smoke || o.quick || !o.sets.empty() || o.lessons.size() > 1)) {
     return "--replot draws one CSV as it is: not with --all, --smoke, --quick, --set or a "
@@ -223,6 +236,11 @@ int sweepMain(int argc, char** argv) {
   if (std::string e = parse(argc, argv, o, all); !e.empty()) {
     std::fprintf(stderr, "bench_sweep: %s\n", printable(e).c_str());
     return 2;
+  }
+  int exit_code = 0;
+  if (std::string e = headlessProblem(o.backend, o.device, exit_code); !e.empty()) {
+    std::fprintf(stderr, "bench_sweep: %s\n", printable(e).c_str());
+    return exit_code;
   }
   std::vector<std::string> with_sweep;
   for (const auto& [name, sweep] : allSweeps()) with_sweep.push_back(name);

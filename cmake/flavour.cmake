@@ -28,7 +28,10 @@ function(shadows_flavour flavour suffix)
   target_link_libraries(shadows_common${suffix} PUBLIC shadows_core glad${suffix}
     imgui_gl3${suffix} PkgConfig::GLFW)
   if(OSMESA_FOUND)
-    target_link_libraries(shadows_common${suffix} PUBLIC PkgConfig::OSMESA)
+    # Its header only: libOSMesa (and the LLVM it links) is dlopen()ed when asked for
+    # (common/context.cpp), so a binary runs where only a GPU's GL is installed.
+    target_include_directories(shadows_common${suffix} SYSTEM PRIVATE ${OSMESA_INCLUDE_DIRS})
+    target_link_libraries(shadows_common${suffix} PUBLIC ${CMAKE_DL_LIBS})
   endif()
   if(EGL_FOUND)
     target_link_libraries(shadows_common${suffix} PUBLIC PkgConfig::EGL)

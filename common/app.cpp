@@ -186,8 +186,8 @@ Light Runner::currentLight() const {
 
 void Runner::initHeadless() {
   gpu_ = std::make_unique<Gpu>();
-  gpu_->context = createHeadlessContext(options_.backend.empty() ? headlessBackends().front()
-                                                                 : options_.backend);
+  gpu_->context = createHeadlessContext(
+      options_.backend.empty() ? headlessBackends().front() : options_.backend, options_.device);
   initGl();
   if (options_.panel) {
     ImGui::CreateContext();

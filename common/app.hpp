@@ -113,9 +113,9 @@ class Lesson {
   virtual std::vector<std::string> unusedSharedParams() const { return {}; }
   // The scene presets the lesson offers, its default first.
   virtual std::vector<std::string> scenes() const { return scenePresets(); }
-  // A path next to the lesson's main.cpp, fixed at build time (never the working directory).
+  // A path next to the lesson's main.cpp, or its copy in a bundle (program.hpp).
   static std::filesystem::path lessonFile(const std::string& lessonDir, const std::string& file) {
-    return std::filesystem::path(lessonDir) / file;
+    return shadows::lessonFile(lessonDir, file);
   }
 };
 
@@ -134,6 +134,7 @@ struct RunOptions {
   bool headless = false;
   bool force_window = false;
   std::string backend;  // a headless context (headlessBackends()); empty: the build's default
+  int device = 0;       // --device: the EGL device of --backend egl-device
   int width = 800, height = 600;
   int frames = 5;
   bool frames_given = false;  // --frames on the command line: a window run stops after them
@@ -312,6 +313,7 @@ class Runner {
 };
 
 // main() of every lesson binary: parse, run, exit code (0 ok, 1 runtime failure, 2 bad input).
-int runLessonMain(int argc, char** argv);
+// `lesson`: which one, in a program that has them all (empty: the only one registered).
+int runLessonMain(int argc, char** argv, const std::string& lesson = {});
 
 }  // namespace shadows

@@ -33,6 +33,18 @@ std::string readCount(Arguments& args, int& out, int max) {
   return {};
 }
 
+std::string readIndex(Arguments& args, int& out, int max) {
+  std::string value;
+  const bool digits = args.value(value) && !value.empty() && value.size() <= 9 &&
+                      value.find_first_not_of("0123456789") == std::string::npos;
+  if (!digits || std::stoi(value) > max) {
+    return args.flag() + ": expected a whole number in 0.." + std::to_string(max) + ", got '" +
+           value + "'";
+  }
+  out = std::stoi(value);
+  return {};
+}
+
 std::string readSize(Arguments& args, int& width, int& height, int minSide) {
   constexpr int kMaxSide = 8192;
   std::string value;

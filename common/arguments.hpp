@@ -36,6 +36,9 @@ bool parsePositive(const std::string& text, int& out, int max);
 // "--frames: expected a whole number in 1..100000, got '0'".
 std::string readCount(Arguments& args, int& out, int max);
 
+// The flag's value as an index in 0..max: "--device: expected a whole number in 0..63, got 'x'".
+std::string readIndex(Arguments& args, int& out, int max);
+
 // --size WxH, each side in minSide..8192.
 std::string readSize(Arguments& args, int& width, int& height, int minSide = 1);
 

@@ -35,8 +35,11 @@ const char* kUsage =
     "  --headless           render without a display (OSMesa) and write --out\n"
     "  --window             a window even when DISPLAY is unset (fails without a display)\n"
     "  --backend NAME       headless context: osmesa (the default on desktop GL), egl\n"
-    "                       (surfaceless; the default on OpenGL ES) or glfw (a hidden\n"
-    "                       window: macOS)\n"
+    "                       (surfaceless; the default on OpenGL ES), egl-device (a GPU\n"
+    "                       without a display, EGL_EXT_platform_device) or glfw (a\n"
+    "                       hidden window: macOS)\n"
+    "  --device N           the EGL device of --backend egl-device (default 0; a wrong\n"
+    "                       one lists those there are)\n"
     "  --size WxH           image size (default 800x600)\n"
     "  --frames N           timed frames after one warm-up frame (default 5; in a window:\n"
     "                       render N frames, write the outputs asked for, exit)\n"
@@ -100,6 +103,7 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
     }
     return nullptr;
   };
+  bool device_given = false;
   for (Arguments args(argc, argv); args.next();) {
     const std::string& arg = args.flag();
     std::string value, why;
@@ -118,16 +122,11 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
     } else if (arg == "--help" || arg == "-h") {
       o.help = true;
     } else if (arg == "--backend") {
-      const std::vector<std::string> backends = headlessBackends();
-      if (!args.value(value) ||
-          std::find(backends.begin(), backends.end(), value) == backends.end()) {
-        std::string allowed;
-        for (size_t i = 0; i < backends.size(); ++i) {
-          allowed += (i == 0 ? "" : i + 1 == backends.size() ? " or " : ", ") + backends[i];
-        }
-        return "--backend: expected " + allowed;
-      }
-      o.backend = value;
+      args.value(value);
+      if (why = checkBackend(value); why.empty()) o.backend = value;
+    } else if (arg == "--device") {
+      why = readIndex(args, o.device, 63);
+      device_given = true;
     } else if (arg == "--size") {
       why = readSize(args, o.width, o.height);
     } else if (arg == "--frames") {
@@ -149,6 +148,9 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
     }
     if (!why.empty()) return why;
   }
+  if (device_given && o.backend != "egl-device") {
+    return "--device chooses an EGL device: it needs --backend egl-device";
+  }
   // Two outputs into one file would leave only the last: refuse it up front, however the two
   // names spell it (./a.png, sub/../a.png, a link, a hard link). Only a character device such
   // as /dev/null may take several.
@@ -162,8 +164,19 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
   return {};
 }
 
-int runLessonMain(int argc, char** argv) {
-  const auto lessons = registeredLessons();
+int runLessonMain(int argc, char** argv, const std::string& lesson) {
+  std::vector<std::string> lessons = registeredLessons();
+  if (!lesson.empty()) {
+    // A program with every lesson runs the one it is called as (a link named after it).
+    if (std::find(lessons.begin(), lessons.end(), lesson) == lessons.end()) {
+      std::string names;
+      for (const std::string& name : lessons) names += (names.empty() ? "" : ", ") + name;
+      std::fprintf(stderr, "%s: call this program by a lesson's name (a link): %s\n",
+                   printable(lesson).c_str(), names.c_str());
+      return 2;
+    }
+    lessons = {lesson};
+  }
   if (lessons.size() != 1) {
     std::fprintf(stderr, "expected exactly one lesson in this binary\n");
     return 1;
@@ -189,6 +202,12 @@ int runLessonMain(int argc, char** argv) {
     if (options.list_params) {
       std::printf("%s", runner.params().listText().c_str());
       return 0;
+    }
+    // A device that is not there is bad input (2, with the list); an EGL that cannot list
+    // devices is this machine's limit (1). Both before anything is rendered or written.
+    int exit_code = 0;
+    if (std::string e = headlessProblem(options.backend, options.device, exit_code); !e.empty()) {
+      return complain(e, exit_code);
     }
     return runner.run();
   } catch (const std::exception& e) {

@@ -9,10 +9,13 @@
 #endif
 #if SHADOWS_HAVE_OSMESA && !SHADOWS_GLES  // OSMesa makes desktop contexts only
 #include <GL/osmesa.h>
+#include <dlfcn.h>
 #endif
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
+#include <sstream>
 #include <vector>
 
 namespace shadows {
@@ -29,9 +32,54 @@ constexpr int kMajor = 4, kMinor = 5;
 #endif
 
 #if SHADOWS_HAVE_OSMESA && !SHADOWS_GLES
+// OSMesa is loaded when asked for, not linked: it pulls in LLVM (~120 MB), which a machine
+// with a GPU (and the bundle, scripts/bundle.sh) has no use for.
+struct OsMesaApi {
+  decltype(&OSMesaCreateContextAttribs) createContextAttribs = nullptr;
+  decltype(&OSMesaMakeCurrent) makeCurrent = nullptr;
+  decltype(&OSMesaGetProcAddress) getProcAddress = nullptr;
+  decltype(&OSMesaDestroyContext) destroyContext = nullptr;
+  decltype(&OSMesaGetCurrentContext) getCurrentContext = nullptr;
+  std::string why;  // empty when loaded
+
+  // The library, loaded once per process; `why` says when it cannot be had.
+  static const OsMesaApi& get() {
+    static const OsMesaApi api = load();
+    return api;
+  }
+  // Only when it is loaded already: asking what is current must not pull in LLVM.
+  static const OsMesaApi* ifLoaded() {
+    if (dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_NOLOAD) == nullptr) return nullptr;
+    return get().why.empty() ? &get() : nullptr;
+  }
+
+ private:
+  static OsMesaApi load() {
+    OsMesaApi api;
+    void* handle = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL);
+    if (handle == nullptr) {
+      const char* error = dlerror();
+      api.why = std::string("OSMesa: cannot load libOSMesa.so.8 (") + (error ? error : "?") + ")";
+      return api;
+    }
+    auto symbol = [&](auto& function, const char* name) {
+      function = reinterpret_cast<std::remove_reference_t<decltype(function)>>(dlsym(handle, name));
+      if (function == nullptr && api.why.empty()) api.why = std::string("OSMesa: no ") + name;
+    };
+    symbol(api.createContextAttribs, "OSMesaCreateContextAttribs");
+    symbol(api.makeCurrent, "OSMesaMakeCurrent");
+    symbol(api.getProcAddress, "OSMesaGetProcAddress");
+    symbol(api.destroyContext, "OSMesaDestroyContext");
+    symbol(api.getCurrentContext, "OSMesaGetCurrentContext");
+    return api;
+  }
+};
+
 class OsMesaContext final : public HeadlessContext {
  public:
   OsMesaContext() {
+    api_ = &OsMesaApi::get();
+    if (!api_->why.empty()) throw GlFailure(api_->why);
     const int attribs[] = {OSMESA_FORMAT,
                            OSMESA_RGBA,
                            OSMESA_DEPTH_BITS,
@@ -45,37 +93,103 @@ class OsMesaContext final : public HeadlessContext {
                            OSMESA_CONTEXT_MINOR_VERSION,
                            kMinor,
                            0};
-    context_ = OSMesaCreateContextAttribs(attribs, nullptr);
+    context_ = api_->createContextAttribs(attribs, nullptr);
     if (context_ == nullptr) {
       throw GlFailure(std::string("OSMesa: cannot create ") + contextName());
     }
     // The runner renders into its own FBO; OSMesa only needs some buffer to be current.
     buffer_.resize(16 * 16 * 4);
-    if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, 16, 16)) {
+    if (!api_->makeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, 16, 16)) {
       throw GlFailure("OSMesa: cannot make the context current");
     }
-    if (!loadGl(reinterpret_cast<GLADloadfunc>(OSMesaGetProcAddress))) {
+    if (!loadGl(reinterpret_cast<GLADloadfunc>(api_->getProcAddress))) {
       throw GlFailure("OSMesa: glad could not load GL");
     }
   }
-  ~OsMesaContext() override { OSMesaDestroyContext(context_); }
+  ~OsMesaContext() override { api_->destroyContext(context_); }
 
  private:
+  const OsMesaApi* api_ = nullptr;
   OSMesaContext context_ = nullptr;
   std::vector<unsigned char> buffer_;
 };
 #endif
 
 #if SHADOWS_HAVE_EGL
-class EglSurfacelessContext final : public HeadlessContext {
- public:
-  EglSurfacelessContext() {
-    auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-        eglGetProcAddress("eglGetPlatformDisplayEXT"));
-    if (getPlatformDisplay == nullptr) throw GlFailure("EGL: no eglGetPlatformDisplayEXT");
-    display_ = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+PFNEGLGETPLATFORMDISPLAYEXTPROC getPlatformDisplay() {
+  auto get = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+      eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  if (get == nullptr) throw GlFailure("EGL: no eglGetPlatformDisplayEXT");
+  return get;
+}
+
+// Whether a space-separated EGL extension list names `name`.
+bool hasExtension(const char* list, const std::string& name) {
+  std::istringstream words(list != nullptr ? list : "");
+  for (std::string word; words >> word;) {
+    if (word == name) return true;
+  }
+  return false;
+}
+
+// EGL_EXT_device_enumeration: the devices, or why there are none to choose from.
+struct EglDevices {
+  std::string unsupported;
+  std::vector<EGLDeviceEXT> devices;
+  std::vector<std::string> names;
+};
+
+EglDevices enumerateEglDevices() {
+  EglDevices out;
+  const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  for (const char* needed : {"EGL_EXT_device_enumeration", "EGL_EXT_platform_device"}) {
+    if (!hasExtension(client, needed)) {
+      out.unsupported = std::string("EGL: this EGL has no ") + needed +
+                        " (--backend egl-device needs it; try --backend egl)";
+      return out;
+    }
+  }
+  auto query = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+  auto string = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
+      eglGetProcAddress("eglQueryDeviceStringEXT"));
+  EGLint count = 0;
+  if (query == nullptr || !query(0, nullptr, &count)) {
+    out.unsupported = "EGL: eglQueryDevicesEXT failed";
+    return out;
+  }
+  out.devices.resize(static_cast<size_t>(count));
+  if (count > 0 && !query(count, out.devices.data(), &count)) count = 0;
+  out.devices.resize(static_cast<size_t>(count));
+  // A name a person recognizes: the renderer where the driver says it
+  // (EGL_EXT_device_query_name: NVIDIA), the DRM node, or Mesa's software device.
+  for (EGLDeviceEXT device : out.devices) {
+    std::vector<std::string> parts;
+    const char* extensions = string != nullptr ? string(device, EGL_EXTENSIONS) : nullptr;
+    auto add = [&](const char* extension, EGLint name) {
+      if (!hasExtension(extensions, extension)) return;
+      if (const char* value = string(device, name); value != nullptr && *value != 0) {
+        parts.emplace_back(value);
+      }
+    };
+    add("EGL_EXT_device_query_name", EGL_RENDERER_EXT);
+    add("EGL_EXT_device_drm", EGL_DRM_DEVICE_FILE_EXT);
+    if (parts.empty()) add("EGL_EXT_device_drm_render_node", EGL_DRM_RENDER_NODE_FILE_EXT);
+    if (hasExtension(extensions, "EGL_MESA_device_software")) parts.emplace_back("Mesa software");
+    std::string name;
+    for (const std::string& part : parts) name += (name.empty() ? "" : ", ") + part;
+    out.names.push_back(name.empty() ? "unnamed" : name);
+  }
+  return out;
+}
+
+// An EGL context of this build's API with no surface, on the display a platform gives.
+class EglContext : public HeadlessContext {
+ protected:
+  void init(EGLDisplay display, const std::string& what) {
+    display_ = display;
     if (display_ == EGL_NO_DISPLAY || !eglInitialize(display_, nullptr, nullptr)) {
-      throw GlFailure("EGL: the surfaceless platform is not available");
+      display_ = EGL_NO_DISPLAY;
+      throw GlFailure("EGL: " + what + " is not available");
     }
     const EGLint config_attribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE,
                                      SHADOWS_GLES ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_BIT, EGL_NONE};
@@ -108,15 +222,54 @@ class EglSurfacelessContext final : public HeadlessContext {
       throw GlFailure("EGL: glad could not load GL");
     }
   }
-  ~EglSurfacelessContext() override {
+
+ public:
+  ~EglContext() override {
+    if (display_ == EGL_NO_DISPLAY) return;
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    eglDestroyContext(display_, context_);
+    if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
     eglTerminate(display_);
   }
 
  private:
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
+};
+
+// Mesa's surfaceless platform (what Mesa offers without a display or a device node).
+class EglSurfacelessContext final : public EglContext {
+ public:
+  EglSurfacelessContext() {
+    init(getPlatformDisplay()(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr),
+         "the surfaceless platform");
+  }
+};
+
+// The device platform (EGL_EXT_platform_device): what NVIDIA's driver offers headless, and
+// Mesa too (its software device). The device chosen is kept for the report.
+class EglDeviceContext final : public EglContext {
+ public:
+  explicit EglDeviceContext(int index) {
+    const EglDevices found = enumerateEglDevices();
+    if (!found.unsupported.empty()) throw GlFailure(found.unsupported);
+    if (index < 0 || static_cast<size_t>(index) >= found.names.size()) {
+      throw GlFailure(eglDeviceMissing(index, found.names));
+    }
+    init(getPlatformDisplay()(EGL_PLATFORM_DEVICE_EXT, found.devices[static_cast<size_t>(index)],
+                              nullptr),
+         "EGL device " + std::to_string(index));
+    chosen_ = {index, found.names[static_cast<size_t>(index)], found.names.size()};
+    current_ = true;
+  }
+  ~EglDeviceContext() override {
+    current_ = false;
+    chosen_ = {};
+  }
+  static bool isCurrent() { return current_; }
+  static inline EglDeviceChoice chosen_;
+
+ private:
+  static inline bool current_ = false;
 };
 #endif
 
@@ -179,10 +332,13 @@ void setGlfwContextHints() {
 std::string HeadlessContext::current() {
   if (HiddenWindowContext::isCurrent()) return "glfw";
 #if SHADOWS_HAVE_EGL
+  if (EglDeviceContext::isCurrent()) return "egl-device";
   if (eglGetCurrentContext() != EGL_NO_CONTEXT) return "egl";
 #endif
 #if SHADOWS_HAVE_OSMESA && !SHADOWS_GLES
-  if (OSMesaGetCurrentContext() != nullptr) return "osmesa";
+  if (const OsMesaApi* api = OsMesaApi::ifLoaded(); api && api->getCurrentContext() != nullptr) {
+    return "osmesa";
+  }
 #endif
   return "none";
 }
@@ -194,13 +350,15 @@ std::vector<std::string> headlessBackends() {
 #endif
 #if SHADOWS_HAVE_EGL
   backends.push_back("egl");
+  backends.push_back("egl-device");
 #endif
   backends.push_back("glfw");
   return backends;
 }
 
-std::unique_ptr<HeadlessContext> createHeadlessContext(const std::string& backend) {
+std::unique_ptr<HeadlessContext> createHeadlessContext(const std::string& backend, int device) {
 #if SHADOWS_HAVE_EGL
+  if (backend == "egl-device") return std::make_unique<EglDeviceContext>(device);
   if (backend == "egl") return std::make_unique<EglSurfacelessContext>();
 #endif
 #if SHADOWS_HAVE_OSMESA && !SHADOWS_GLES
@@ -208,6 +366,51 @@ std::unique_ptr<HeadlessContext> createHeadlessContext(const std::string& backen
 #endif
   if (backend == "glfw") return std::make_unique<HiddenWindowContext>();
   throw GlFailure("no headless backend '" + backend + "' in this build");
+}
+
+std::string checkBackend(const std::string& value) {
+  const std::vector<std::string> backends = headlessBackends();
+  if (std::find(backends.begin(), backends.end(), value) != backends.end()) return {};
+  std::string allowed;
+  for (size_t i = 0; i < backends.size(); ++i) {
+    allowed += (i == 0 ? "" : i + 1 == backends.size() ? " or " : ", ") + backends[i];
+  }
+  return "--backend: expected " + allowed;
+}
+
+std::string eglDeviceMissing(int index, const std::vector<std::string>& names) {
+  std::string list;
+  for (size_t i = 0; i < names.size(); ++i) {
+    list += (i == 0 ? "" : "; ") + std::to_string(i) + ": " + names[i];
+  }
+  return "--device " + std::to_string(index) + ": no such EGL device (" +
+         (names.empty() ? std::string("there are none") : "there are " + list) + ")";
+}
+
+EglDeviceChoice currentEglDevice() {
+#if SHADOWS_HAVE_EGL
+  if (EglDeviceContext::isCurrent()) return EglDeviceContext::chosen_;
+#endif
+  return {};
+}
+
+std::string headlessProblem(const std::string& backend, int device, int& exit_code) {
+  if (backend != "egl-device") return {};
+#if SHADOWS_HAVE_EGL
+  const EglDevices found = enumerateEglDevices();
+  if (!found.unsupported.empty()) {
+    exit_code = 1;
+    return found.unsupported;
+  }
+  if (device < 0 || static_cast<size_t>(device) >= found.names.size()) {
+    exit_code = 2;
+    return eglDeviceMissing(device, found.names);
+  }
+#else
+  (void)device;
+  (void)exit_code;
+#endif
+  return {};
 }
 
 }  // namespace shadows

@@ -30,7 +30,16 @@ void Runner::writeReport(JsonWriter& json) {
   json.value("lesson", name_);
   json.value("renderer", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
   json.value("flavour", caps().flavour);  // the API this build speaks: gl45, gl41 or gles30
+  json.value("vendor", reinterpret_cast<const char*>(glGetString(GL_VENDOR)));
   json.value("backend", window_ ? std::string("window") : HeadlessContext::current());
+  // Which EGL device rendered it (--backend egl-device), of how many there were.
+  if (const EglDeviceChoice device = currentEglDevice(); device.index >= 0 && !window_) {
+    json.beginObject("device");
+    json.value("index", device.index);
+    json.value("name", device.name);
+    json.value("count", static_cast<int>(device.count));
+    json.endObject();
+  }
   json.beginArray("size");
   json.value("", options_.width);
   json.value("", options_.height);

@@ -199,11 +199,50 @@ INSTANTIATE_TEST_SUITE_P(
                       "--set scene=moon", "--set dimming=nan", "--set inset=maybe",
                       "--set noequals", "--set", "--size 0x10", "--size 640", "--size axb",
                       "--frames 0", "--frames -3", "--backend vulkan",
+                      "--backend egl-device --device 63", "--device 0", "--device x",
+                      "--backend egl-device --device -1", "--backend egl-device --device",
                       "--out /nonexistent/dir/x.png", "--report /nonexistent/r.json",
                       "--error-out /proc/none/e.png", "--truth-out", "--out /tmp/x.jpg",
                       "--error-out /tmp/e.bmp", "--set shadow.height=1", kLongName.c_str(),
                       "--truth-job", "--truth-result /nonexistent/t", "--truth-from",
                       "--truth-from /nonexistent/t.trace", "--truth-from /tmp"));
+
+// The EGL device platform (a GPU without a display): the report names the device, a device
+// that is not there is refused with the list of those there are, and an EGL that cannot
+// enumerate devices is this machine's limit (exit 1), said in one line.
+TEST_F(Cli, EglDeviceBackendNamesItsDeviceInTheReport) {
+  const auto out = (dir / "x.png").string(), report = (dir / "r.json").string();
+  const Result r = run(kLesson,
+                       "--headless --backend egl-device --device 0 --size 64x48 "
+                       "--frames 1 --no-truth --out " +
+                           out + " --report " + report);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json json = readReport(report);
+  EXPECT_EQ(json["backend"], "egl-device");
+  EXPECT_EQ(json["device"]["index"], 0);
+  EXPECT_GE(json["device"]["count"].get<int>(), 1);
+  EXPECT_FALSE(json["device"]["name"].get<std::string>().empty());
+  EXPECT_TRUE(json["vendor"].is_string());
+}
+
+TEST_F(Cli, AMissingEglDeviceListsThoseThereAre) {
+  const Result r = run(kLesson, "--headless --backend egl-device --device 63 --size 64x48");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--device 63: no such EGL device (there are 0: "), std::string::npos)
+      << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+}
+
+TEST_F(Cli, AnEglWithoutDevicesExitsOneInOneLine) {
+  // glvnd with no vendor library: its EGL offers no device enumeration.
+  const auto out = (dir / "x.png").string();
+  const Result r = run(kLesson, "--headless --backend egl-device --size 64x48 --out " + out,
+                       "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json ");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("EGL_EXT_device_enumeration"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_TRUE(dirIsEmpty());
+}
 
 TEST_F(Cli, AnOutputThatFailsLeavesNoneOfTheOthersAndSaysWhich) {
   // /dev/full accepts the open and fails the write: the report, truth or error picture
