@@ -32,3 +32,12 @@ function(add_flavour_lesson name flavour suffix)
   set_target_properties(${name}${suffix} PROPERTIES OUTPUT_NAME ${name}
                         RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/${flavour})
 endfunction()
+
+# A program scripts/bundle.sh ships: it finds the libraries copied beside it (bundle/lib) by
+# an $ORIGIN rpath, inherited by the libraries it loads (DT_RPATH, not DT_RUNPATH, so
+# libglfw finds the bundle's libX11 too). In the build tree bin/../lib does not exist, so the
+# system's libraries are used as before.
+function(shadows_bundled target)
+  set_target_properties(${target} PROPERTIES BUILD_RPATH "\$ORIGIN/../lib")
+  target_link_options(${target} PRIVATE LINKER:--disable-new-dtags)
+endfunction()

@@ -12,8 +12,28 @@
 
 namespace shadows {
 
+std::filesystem::path bundledDataDir() {
+  // Asked once: the binary's own place, links resolved (a lesson in a bundle may be a link).
+  static const std::filesystem::path dir = [] {
+    std::error_code error;
+    const auto exe = std::filesystem::read_symlink("/proc/self/exe", error);
+    if (error) return std::filesystem::path();
+    auto share = exe.parent_path().parent_path() / "share" / "shadows";
+    return std::filesystem::is_directory(share, error) ? share : std::filesystem::path();
+  }();
+  return dir;
+}
+
 std::filesystem::path commonShaderDir() {
-  return SHADOWS_COMMON_SHADER_DIR;
+  const auto bundled = bundledDataDir();
+  return bundled.empty() ? std::filesystem::path(SHADOWS_COMMON_SHADER_DIR)
+                         : bundled / "common" / "shaders";
+}
+
+std::filesystem::path lessonFile(const std::string& lessonDir, const std::string& file) {
+  const auto bundled = bundledDataDir();
+  const std::filesystem::path dir(lessonDir);
+  return (bundled.empty() ? dir : bundled / dir.filename()) / file;
 }
 
 namespace {

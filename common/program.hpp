@@ -76,6 +76,12 @@ ShaderSource preprocessShader(const std::filesystem::path& file);
 // Rewrites "0:12(5): error" style compiler messages into "file.frag:12: error".
 std::string mapShaderLog(const std::string& log, const std::vector<std::string>& files);
 std::filesystem::path commonShaderDir();
+// A path next to a lesson's main.cpp (LESSON_DIR, fixed at build time; never the working
+// directory), or the same file in a bundle.
+std::filesystem::path lessonFile(const std::string& lessonDir, const std::string& file);
+// A bundle (scripts/bundle.sh) keeps the shaders in bin/../share/shadows/, beside its binaries,
+// and reads them from there wherever it is copied; empty for a binary of the build tree.
+std::filesystem::path bundledDataDir();
 // The lines that replace a file's "#version 430 core" on this context: the same where the API
 // has that version, "#version 410 core" on a 4.1 build, "#version 300 es" and precision lines
 // on OpenGL ES.
