@@ -106,6 +106,7 @@ fi
 if [ $glvnd = 1 ]; then
   # Debian's loader libraries (the machine's own driver stays the one that renders).
   tmp=$(mktemp -d)
+  chmod 777 "$tmp"  # apt downloads as its own user (_apt)
   (cd "$tmp" && apt-get download libegl1 libglvnd0 libopengl0 libgles2 > /dev/null)
   for deb in "$tmp"/*.deb; do dpkg-deb -x "$deb" "$out/glvnd"; done
   rm -rf "$tmp"
