@@ -224,6 +224,9 @@ class EglContext : public HeadlessContext {
   }
 
  public:
+  EGLDisplay display() const {
+    return display_;
+  }
   ~EglContext() override {
     if (display_ == EGL_NO_DISPLAY) return;
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
@@ -255,9 +258,17 @@ class EglDeviceContext final : public EglContext {
     if (index < 0 || static_cast<size_t>(index) >= found.names.size()) {
       throw GlFailure(eglDeviceMissing(index, found.names));
     }
-    init(getPlatformDisplay()(EGL_PLATFORM_DEVICE_EXT, found.devices[static_cast<size_t>(index)],
-                              nullptr),
+    const EGLDeviceEXT device = found.devices[static_cast<size_t>(index)];
+    init(getPlatformDisplay()(EGL_PLATFORM_DEVICE_EXT, device, nullptr),
          "EGL device " + std::to_string(index));
+    // Asked of the display, not assumed: the report names the device that really renders.
+    auto attached = reinterpret_cast<PFNEGLQUERYDISPLAYATTRIBEXTPROC>(
+        eglGetProcAddress("eglQueryDisplayAttribEXT"));
+    EGLAttrib on = 0;
+    if (attached == nullptr || !attached(display(), EGL_DEVICE_EXT, &on) ||
+        reinterpret_cast<EGLDeviceEXT>(on) != device) {
+      throw GlFailure("EGL: the display is not on device " + std::to_string(index));
+    }
     chosen_ = {index, found.names[static_cast<size_t>(index)], found.names.size()};
     current_ = true;
   }

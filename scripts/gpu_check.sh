@@ -242,7 +242,8 @@ target_row() {  # target_row TEXT LIMIT GPU_RATIO LLVMPIPE_RATIO
     [ -f "$f" ] || continue
     views=$(grep -c '^view ' "$f")
     moved=$(grep -c '^FAIL .*pixels differ' "$f")
-    worst=$(awk '/^view /{ n = $3 + 0; if (n >= best) { best = n; w = $2 " " $3 " px, " $NF } } END { print w }' "$f")
+    worst=$(awk '/^view /{ n = $3 + 0; if (n > best) { best = n; w = $2 " " $3 " px, " $NF } }
+                 END { print (w == "" ? "none differs" : w) }' "$f")
     errors=$(grep -c '^FAIL error/' "$f")
     notes=$(grep -c '^NOTE ' "$f")
     other=$(grep '^FAIL ' "$f" | grep -vc 'pixels differ\|^FAIL error/')

@@ -31,7 +31,9 @@ TEST_P(EglDevice, RendersTheDefaultsAsOsMesaDoes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryLesson, EglDevice, ::testing::ValuesIn(registeredLessons()),
-                         [](const auto& info) { return info.param; });
+                         [](const ::testing::TestParamInfo<std::string>& lesson) {
+                           return lesson.param;
+                         });
 
 TEST(EglDeviceChoice, AMissingDeviceIsRefusedWithTheList) {
   int exit_code = 0;
