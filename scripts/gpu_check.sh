@@ -82,7 +82,7 @@ fi
 field() { sed -n "s/^ *\"$1\": \"\([^\"]*\)\".*/\1/p" "$out/probe.json" | head -1; }
 renderer=$(field renderer)
 vendor=$(field vendor)
-device_name=$(field name)
+device_name=$(awk '/"device": \{/ { inside = 1 } inside && /"name":/ { sub(/.*"name": "/, ""); sub(/".*/, ""); print; exit }' "$out/probe.json")
 log "rendering on: $renderer ($vendor; $backend ${device_name:+device $device: $device_name})"
 
 # ---------------------------------------------------------------- every lesson's views
