@@ -4,6 +4,11 @@
 # out/<lesson>.png and out/<lesson>.json.
 set -euo pipefail
 cd "$(dirname "$0")"
+# ./run.sh web [port]: build the lessons' web pages (build/web/site/) and serve them locally.
+if [[ ${1:-} == web ]]; then
+  scripts/setup_pages.sh
+  exec node web/serve.mjs build/web/site "${2:-8024}"
+fi
 # Only the lessons: the tests and the benchmark are test.sh's business.
 scripts/setup.sh --lessons
 

@@ -344,6 +344,8 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
     measure_->setEnabled(false);
     measureError();
     measure_->setEnabled(timed);
+    if (!kHaveTruth)
+      frame.clearTarget(Frame::kNoTruthColor);  // a plain picture; the panel says why
     showImage(frame, frame.mode == "truth" ? truth_image_ : error_image_);
   } else {
     ProgramVariants::takeUsed();  // only this frame's

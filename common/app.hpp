@@ -77,6 +77,8 @@ struct Frame {
   // Binds the target and clears colour, depth and stencil (to the sky, by default).
   void clearTarget(glm::vec3 color = kSky) const;
   static constexpr glm::vec3 kSky{0.55f, 0.62f, 0.72f};
+  // What the truth and error views show in a build without the truth (the browser's).
+  static constexpr glm::vec3 kNoTruthColor{0.12f, 0.12f, 0.14f};
   // Draws objects with `program`, setting uModel and uColor per object. With `cull`, objects
   // whose bounds lie outside that view-projection are skipped and counted as culled.
   void drawObjects(const Program& program, Objects which, const glm::mat4* cull = nullptr) const;
@@ -185,6 +187,12 @@ class Runner {
   const Measure& baselineMeasure() const { return *baseline_measure_; }
   // The panel's frame line: the median the report gives ("measuring..." before any frame).
   std::string costSummary() const;
+  // The last frame's work counters, one line: "name N, ..., name unavailable on gles30".
+  std::string counterSummary() const;
+  // The next window frame is saved as a screenshot (what the F12 key does).
+  void requestScreenshot() { screenshot_requested_ = true; }
+  // Why the truth and error views show no picture ("" when the build has the truth).
+  static std::string truthUnavailable();
   // Feeds ImGui a mouse state for the next frame (headless tests drive the panel this way).
   void setMouse(glm::vec2 position, bool leftDown);
   // Whether input is moving (the window sets it each frame; tests may too): Frame::input_moving.
@@ -217,6 +225,12 @@ class Runner {
   std::string checkConsistency() const;
   // Runs the whole program (window or headless) and returns the exit code.
   int run();
+  // The window loop in steps, for a browser that calls one frame at a time
+  // (emscripten_set_main_loop): open (false: no window, see run()), then frames while
+  // windowFrame() says true, then close, which returns the exit code.
+  bool openWindow();
+  bool windowFrame();
+  int closeWindow();
 
   // Moves one scene object (lesson 01 tilts its receiver plane). Everything follows it: the
   // lesson's draws, the runner's geometry pass and the ray-traced truth, which is rebuilt

@@ -9,7 +9,11 @@ namespace {
 // What the build's API allows at most; loadGl keeps what the context really has.
 Caps ceiling() {
   Caps c;
-#if SHADOWS_GLES
+#if SHADOWS_GLES && defined(__EMSCRIPTEN__)
+  c.flavour = "webgl2";  // the gles30 flavour in a browser: what a page says is missing
+  c.es = true;
+  c.glsl_version = 300;
+#elif SHADOWS_GLES
   c.flavour = "gles30";
   c.es = true;
   c.glsl_version = 300;
@@ -25,6 +29,17 @@ Caps ceiling() {
 
 Caps g_caps = ceiling();
 
+#ifdef __EMSCRIPTEN__
+extern "C" void* emscripten_webgl1_get_proc_address(const char* name);
+extern "C" void* emscripten_webgl2_get_proc_address(const char* name);
+// WebGL 2's entry points before WebGL 1's: emscripten's GetProcAddress (GLFW's) asks WebGL 1
+// first, which answers glGenQueries with EXT_disjoint_timer_query's, absent from WebGL 2.
+GLADapiproc webgl2First(const char* name) {
+  void* f = emscripten_webgl2_get_proc_address(name);
+  return reinterpret_cast<GLADapiproc>(f != nullptr ? f : emscripten_webgl1_get_proc_address(name));
+}
+#endif
+
 }  // namespace
 
 const Caps& caps() {
@@ -34,16 +49,22 @@ const Caps& caps() {
 bool loadGl(GLADloadfunc load) {
   Caps c = ceiling();
 #if SHADOWS_GLES
+#ifdef __EMSCRIPTEN__
+  load = webgl2First;
+#endif
   if (gladLoadGLES2(load) == 0) return false;
   // Nothing optional but what WebGL 2 offers too: errors through KHR_debug where it is there,
   // float colour targets (the truth's read backs) through EXT_color_buffer_float. Border clamp
   // and clip distances, which Mesa's ES has as extensions and WebGL does not, are emulated.
   c.debug_output = GLAD_GL_KHR_debug != 0;
   c.float_color_targets = GLAD_GL_EXT_color_buffer_float != 0;
+#ifndef __EMSCRIPTEN__
+  c.texture_swizzle = true;  // ES 3.0 has it; WebGL 2 left it out
+#endif
 #else
   if (gladLoadGL(load) == 0) return false;
   c.samples_passed = c.texture_1d = c.border_clamp = c.clip_distance = true;
-  c.depth_readback = c.float_color_targets = true;
+  c.depth_readback = c.float_color_targets = c.texture_swizzle = true;
   c.depth_clamp = GLAD_GL_VERSION_3_2 != 0;
   c.pipeline_statistics = GLAD_GL_ARB_pipeline_statistics_query != 0;
   c.debug_output = GLAD_GL_KHR_debug != 0;

@@ -28,6 +28,8 @@ struct Caps {
   bool early_fragment_tests = false;  // layout(early_fragment_tests): GL 4.2; else the driver's
   bool float_color_targets = false;   // RGBA32F colour attachments (the truth's read backs)
   bool depth_clamp = false;           // GL_DEPTH_CLAMP (GL 3.2; not in ES 3.0 nor WebGL 2)
+  bool texture_swizzle = false;       // GL_TEXTURE_SWIZZLE_* (GL 3.3, ES 3.0; not WebGL 2):
+                                      // else the image shader swizzles what it shows
 
   // "unavailable on gles30": what a report or panel says for a number this context lacks.
   std::string unavailable() const { return "unavailable on " + flavour; }

@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <bit>
+#include <cstring>
 
 #include "depth_digits.hpp"
 
@@ -98,7 +99,9 @@ bool driverReadbackRoundsToNearest(int digits, [[maybe_unused]] int depthBits) {
   glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, bytes);
   const std::uint32_t word =
       bytes[0] | bytes[1] << 8 | bytes[2] << 16 | static_cast<std::uint32_t>(bytes[3]) << 24;
-  return std::bit_cast<float>(word);
+  float value = 0.0f;  // std::bit_cast, which emscripten 3.1's libc++ lacks
+  std::memcpy(&value, &word, sizeof value);
+  return value;
 }
 // The size of one glPolygonOffset `unit` in window depth for a depth buffer of these bits:
 // "the smallest value guaranteed to produce a resolvable offset", whose size the GL leaves

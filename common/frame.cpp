@@ -101,6 +101,36 @@ void Runner::drawImageInset(const Frame& frame, const Texture& image, bool fulls
   gpu_->image.set("uHasBorder", image.border() ? 1 : 0);
   gpu_->image.set("uBorder", image.border().value_or(glm::vec4(0.0f)));
   gpu_->image.set("uLinear", image.filter() == GL_LINEAR ? 1 : 0);
+  // The texture's swizzle, where the GL did not apply it: output channel i reads source
+  // channel swizzle[i] (column j of the matrix is source channel j), or the constant 0 or 1.
+  glm::mat4 swizzle(1.0f);
+  glm::vec4 constant(0.0f);
+  if (!caps().texture_swizzle) {
+    swizzle = glm::mat4(0.0f);
+    for (int i = 0; i < 4; ++i) {
+      switch (image.swizzle()[i]) {
+        case GL_RED:
+          swizzle[0][i] = 1.0f;
+          break;
+        case GL_GREEN:
+          swizzle[1][i] = 1.0f;
+          break;
+        case GL_BLUE:
+          swizzle[2][i] = 1.0f;
+          break;
+        case GL_ALPHA:
+          swizzle[3][i] = 1.0f;
+          break;
+        case GL_ONE:
+          constant[i] = 1.0f;
+          break;
+        default:
+          break;  // GL_ZERO
+      }
+    }
+  }
+  gpu_->image.set("uSwizzle", swizzle);
+  gpu_->image.set("uSwizzleConstant", constant);
   glBindVertexArray(gpu_->empty_vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   countDrawCall();

@@ -169,7 +169,9 @@ void Texture::setBorder([[maybe_unused]] const glm::vec4& color) {
 #endif
 }
 
-void Texture::setSwizzle(GLenum r, GLenum g, GLenum b, GLenum a) const {
+void Texture::setSwizzle(GLenum r, GLenum g, GLenum b, GLenum a) {
+  swizzle_ = {r, g, b, a};
+  if (!caps().texture_swizzle) return;
   // One channel at a time: GL_TEXTURE_SWIZZLE_RGBA is desktop only.
   glBindTexture(target_, name_.id());
   glTexParameteri(target_, GL_TEXTURE_SWIZZLE_R, static_cast<GLint>(r));

@@ -4,6 +4,7 @@
 
 #include "gl_api.hpp"
 
+#include <array>
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <map>
@@ -81,7 +82,9 @@ class Texture {
   void setWrap(GLenum s, GLenum t) const;
   void setBorder(const glm::vec4& color);
   // Which stored channel each of r, g, b, a reads (GL_RED, GL_GREEN, GL_ZERO, GL_ONE, ...).
-  void setSwizzle(GLenum r, GLenum g, GLenum b, GLenum a) const;
+  // Without Caps::texture_swizzle (WebGL 2) only kept: the image shader applies it.
+  void setSwizzle(GLenum r, GLenum g, GLenum b, GLenum a);
+  const std::array<GLenum, 4>& swizzle() const { return swizzle_; }
   // Makes a depth texture a sampler2DShadow (GL_COMPARE_REF_TO_TEXTURE) or a plain one.
   void setCompare(bool compare) const;
   GLuint id() const { return name_.id(); }
@@ -98,6 +101,7 @@ class Texture {
   GlName<deleteTexture> name_;
   GLenum target_ = GL_TEXTURE_2D;
   GLenum filter_ = GL_NEAREST_MIPMAP_LINEAR;  // the GL's default
+  std::array<GLenum, 4> swizzle_{GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA};
   std::optional<glm::vec4> border_;
   int width_ = 0, height_ = 0;
 };

@@ -39,6 +39,21 @@ std::string Runner::costSummary() const {
   return summary;
 }
 
+std::string Runner::counterSummary() const {
+  std::string counts;
+  for (const auto& [name, count] : measure_->lastFrameCounts()) {
+    counts += (counts.empty() ? "" : ", ") + name + " " + std::to_string(count);
+  }
+  for (const std::string& name : measure_->lastFrameUnavailable()) {
+    counts += (counts.empty() ? "" : ", ") + name + " " + caps().unavailable();
+  }
+  return counts;
+}
+
+std::string Runner::truthUnavailable() {
+  return kHaveTruth ? "" : std::string(kNoTruthNote) + ": the truth and error views are empty";
+}
+
 bool Runner::panelDue(int width, int height) {
   Gpu& g = *gpu_;
   glm::dvec2 cursor;
@@ -177,14 +192,10 @@ void Runner::drawPanel(Frame& frame) {
         }
       }
     }
-    std::string counts;
-    for (const auto& [name, count] : measure_->lastFrameCounts()) {
-      counts += (counts.empty() ? "" : ", ") + name + " " + std::to_string(count);
-    }
-    for (const std::string& name : measure_->lastFrameUnavailable()) {
-      counts += (counts.empty() ? "" : ", ") + name + " " + caps().unavailable();
-    }
-    ImGui::TextWrapped("%s", counts.c_str());
+    ImGui::TextWrapped("%s", counterSummary().c_str());
+  }
+  if (!kHaveTruth && ImGui::CollapsingHeader("Error", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::TextWrapped("%s", truthUnavailable().c_str());
   }
   if (options_.truth && ImGui::CollapsingHeader("Error", ImGuiTreeNodeFlags_DefaultOpen)) {
     if (error_.valid) {

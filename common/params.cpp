@@ -6,7 +6,6 @@
 #include <cctype>
 #include <cerrno>
 #include <cfloat>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -88,10 +87,15 @@ std::string allowed(const Param& p) {
 // 0.1f is 0.1 here, not 0.100000001): 4.9999999 is below a minimum of 5 even though it
 // rounds to 5.0f.
 // The shortest decimal that reads back as `f`: the bound as the source wrote it.
+// (What std::to_chars gives, found digit by digit: emscripten 3.1's libc++ has no float
+// to_chars.)
 double asWritten(float f) {
   char buf[32];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, f);
-  return ec == std::errc() ? std::strtod(std::string(buf, end).c_str(), nullptr) : f;
+  for (int digits = 1; digits <= 9; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, static_cast<double>(f));
+    if (std::strtof(buf, nullptr) == f) return std::strtod(buf, nullptr);
+  }
+  return f;
 }
 
 bool inRange(const Param& p, double v) {

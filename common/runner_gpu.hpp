@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "app.hpp"
@@ -15,7 +16,16 @@
 
 struct GLFWwindow;
 
+// Whether this build has the ray-traced truth (Embree, native); the browser's build has none
+// yet, and its truth and error views say so (app.cpp) instead of showing a picture.
+#ifndef SHADOWS_HAVE_TRUTH
+#define SHADOWS_HAVE_TRUTH 1
+#endif
+
 namespace shadows {
+
+inline constexpr bool kHaveTruth = SHADOWS_HAVE_TRUTH != 0;
+inline constexpr const char* kNoTruthNote = "truth not available in this build";
 
 struct Runner::Gpu {
   // First member, so it is destroyed last: every GL object below needs it to be deleted.
@@ -47,6 +57,19 @@ struct Runner::Gpu {
   bool imgui = false;
   bool imgui_glfw = false;
   GLFWwindow* window = nullptr;
+  // The window loop's state between frames (Runner::windowFrame): the orbit drag, the H key,
+  // when the sliders last moved, the frames a scripted run has left.
+  struct WindowLoop {
+    double last_x = 0, last_y = 0;
+    bool h_was_down = false;
+    bool dragging = false;
+    std::chrono::steady_clock::time_point changed_at{};
+    std::optional<std::chrono::steady_clock::time_point> moved_at;
+    std::string last_key;
+    int frames_left = -1;
+    long long frame_number = 0;
+    bool outputs_failed = false;
+  } loop;
 
   ~Gpu() {
     if (imgui) {

@@ -25,6 +25,13 @@
 namespace shadows {
 
 int Runner::runWindow() {
+  if (!openWindow()) return kNoWindow;
+  while (windowFrame()) {
+  }
+  return closeWindow();
+}
+
+bool Runner::openWindow() {
   // Until a window is open, GLFW's complaint is kept for the one line run() prints about it;
   // after that, it is printed as it comes.
   static std::string* opening_error = &window_error_;
@@ -38,7 +45,7 @@ int Runner::runWindow() {
   });
   if (!glfwInit()) {
     opening_error = nullptr;  // later errors (a headless fallback's) are printed, not kept
-    return kNoWindow;
+    return false;
   }
   window_ = true;
   setGlfwContextHints();
@@ -49,11 +56,13 @@ int Runner::runWindow() {
     glfwTerminate();
     window_ = false;
     opening_error = nullptr;
-    return kNoWindow;
+    return false;
   }
   opening_error = nullptr;
   glfwMakeContextCurrent(window);
+#ifndef __EMSCRIPTEN__  // the browser paces frames itself (emscripten_set_main_loop)
   glfwSwapInterval(1);
+#endif
   if (!loadGl(glfwGetProcAddress)) throw GlFailure("glad could not load GL");
   gpu_ = std::make_unique<Gpu>();
   gpu_->window = window;
@@ -88,22 +97,24 @@ int Runner::runWindow() {
   initImGuiGl();
   gpu_->imgui_glfw = true;
 
-  double last_x = 0, last_y = 0;
-  bool h_was_down = false;
-  bool dragging = false;
-  auto changed_at = std::chrono::steady_clock::now();
-  std::optional<std::chrono::steady_clock::time_point> moved_at;
-  std::string last_key;
   // With an output or --frames, a windowed run renders --frames frames, writes what was asked
   // for and exits: that is how the tests check the real window path under xvfb.
   const bool scripted = options_.frames_given || !options_.out.empty() ||
                         !options_.report.empty() || !options_.truth_out.empty() ||
                         !options_.error_out.empty() || !options_.truth_job.empty() ||
                         !options_.truth_result.empty();
-  int frames_left = scripted ? options_.frames + 1 : -1;
-  long long frame_number = 0;
-  bool outputs_failed = false;
-  while (!glfwWindowShouldClose(window) && frames_left != 0) {
+  gpu_->loop.frames_left = scripted ? options_.frames + 1 : -1;
+  gpu_->loop.changed_at = std::chrono::steady_clock::now();
+  return true;
+}
+
+bool Runner::windowFrame() {
+  GLFWwindow* window = gpu_->window;
+  Gpu::WindowLoop& loop = gpu_->loop;
+  if (glfwWindowShouldClose(window) || loop.frames_left == 0) return false;
+  {
+    auto& [last_x, last_y, h_was_down, dragging, changed_at, moved_at, last_key, frames_left,
+           frame_number, outputs_failed] = loop;
     glfwPollEvents();
     const ImGuiIO& io = ImGui::GetIO();
     // Orbit the eye around its target with the left mouse button, zoom with the wheel.
@@ -197,6 +208,12 @@ int Runner::runWindow() {
     }
     glfwSwapBuffers(window);
   }
+  return true;
+}
+
+int Runner::closeWindow() {
+  GLFWwindow* window = gpu_->window;
+  const bool outputs_failed = gpu_->loop.outputs_failed;
   releaseGl();
   glfwDestroyWindow(window);
   return GlErrorLog::count() > 0 || outputs_failed ? 1 : 0;

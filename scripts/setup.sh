@@ -8,24 +8,10 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 packages=(build-essential cmake pkg-config python3-glad
   libglfw3-dev libglm-dev libosmesa6-dev libegl-dev libegl-mesa0 libimgui-dev libstb-dev
   libembree-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev xvfb xauth gnuplot-nox nodejs)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
 # Debian packs npm apart from node; some nodejs packages (NodeSource's) bring their own.
-command -v npm >/dev/null || missing+=(npm)
-if ((${#missing[@]})); then
-  if [[ $(id -u) -eq 0 ]]; then
-    echo "setup: installing ${missing[*]}"
-    export DEBIAN_FRONTEND=noninteractive
-    apt-get update -qq
-    apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-  else
-    echo "setup: missing packages. Run this once, then try again:"
-    echo "  sudo apt-get install -y --no-install-recommends ${missing[*]}"
-    exit 1
-  fi
-fi
+command -v npm >/dev/null || packages+=(npm)
+source scripts/packages.sh
+ensure_packages setup "${packages[@]}"
 
 # The web truth's tracer (three-mesh-bvh), which its agreement test runs under node.
 scripts/setup_web.sh
@@ -42,4 +28,6 @@ if [[ ${1:-} == --lessons ]]; then
 else
   echo "setup: building into build/ with $jobs jobs"
   cmake --build build -j"$jobs"
+  # The web pages and what their browser tests need (tests/CMakeLists.txt, WebPage.*).
+  scripts/setup_pages.sh
 fi

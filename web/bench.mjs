@@ -1,0 +1,82 @@
+// The web pages' benchmark (issue 24's targets; timings, so a benchmark and not a test):
+//  - 03's default frame in headless Chromium (SwiftShader) against the native lesson on
+//    llvmpipe at the same size, interleaved rounds, medians (the report's frame_ms, bracketed
+//    by glFinish; the page's time between shown frames, frame rate limit lifted);
+//  - each page's download, gzip-compressed as a web server would send it;
+//  - page load to first frame (navigation start to the first frame the page reports).
+//   node web/bench.mjs [--rounds N] [--size WxH]   (after scripts/setup_pages.sh and a build)
+import { spawnSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import zlib from 'node:zlib';
+import { launch, open, serve } from './tests/browser.mjs';
+
+const arg = (name, fallback) => {
+  const i = process.argv.indexOf(name);
+  return i > 0 ? process.argv[i + 1] : fallback;
+};
+const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '..');
+const site = path.join(root, 'build/web/site');
+const rounds = Number(arg('--rounds', 5));
+const size = arg('--size', '640x480');
+const lesson = '03_shadow_map_basic';
+const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
+const lessons = fs.readdirSync(site).filter((f) => /^\d\d_.*\.html$/.test(f)).map((f) => f.slice(0, -5));
+console.log(`load average at start: ${os.loadavg().map((x) => x.toFixed(2)).join(' ')} on ${os.cpus().length} cores`);
+
+// Downloads: what a browser fetches for one page, compressed (gzip -9, as a server might).
+let largest = 0;
+for (const l of lessons) {
+  let raw = 0, gz = 0;
+  for (const ext of ['.html', '.js', '.wasm', '.data']) {
+    const bytes = fs.readFileSync(path.join(site, l + ext));
+    raw += bytes.length;
+    gz += zlib.gzipSync(bytes, { level: 9 }).length;
+  }
+  largest = Math.max(largest, gz);
+  console.log(`download ${l}: ${(raw / 1e6).toFixed(2)} MB, ${(gz / 1e6).toFixed(2)} MB gzip`);
+}
+console.log(`largest page download: ${(largest / 1e6).toFixed(2)} MB compressed (target <= 5 MB)`);
+
+const server = await serve(site);
+const browser = await launch(['--disable-gpu-vsync', '--disable-frame-rate-limit']);
+const frame = { web: [], native: [] }, firstFrame = [];
+const report = path.join(os.tmpdir(), `shadows_bench_${process.pid}.json`);
+try {
+  for (let r = 0; r < rounds; ++r) {
+    // Native: the report's frame_ms (median of 30 timed frames), llvmpipe, no truth.
+    const run = spawnSync(path.join(root, 'build/gles30', lesson),
+      ['--headless', '--no-truth', '--size', size, '--frames', '30', '--out', '/dev/null', '--report', report],
+      { encoding: 'utf8', env: { ...process.env, MESA_GLES_VERSION_OVERRIDE: '3.0' } });
+    if (run.status !== 0) throw new Error(`native run failed: ${run.stderr}`);
+    frame.native.push(JSON.parse(fs.readFileSync(report, 'utf8')).frame_ms);
+    // Web: the same frame and the same median, read from the page once 30 frames are timed.
+    const page = await open(browser, `${server.url}${lesson}.html?size=${size}&hide-panel`);
+    await page.waitFor('shadowsPage.frames >= 1', 60000);
+    firstFrame.push(await page.evaluate('shadowsPage.firstFrameMs'));
+    await page.waitFor('shadowsPage.frames >= 45', 120000);
+    // The median time between shown frames, the browser's frame rate limit lifted: WebGL's
+    // glFinish does not wait for the GPU process, so the runner's own median counts only calls.
+    frame.web.push(await page.evaluate('shadowsPage.medianInterval()'));
+    await page.close();
+    console.log(`round ${r + 1}: native ${frame.native.at(-1).toFixed(2)} ms, web ${frame.web.at(-1).toFixed(2)} ms, ` +
+                `first frame ${firstFrame.at(-1).toFixed(0)} ms after navigation`);
+  }
+  // Every page's load to first frame, once each.
+  for (const l of lessons) {
+    const page = await open(browser, `${server.url}${l}.html`);
+    await page.waitFor('shadowsPage.frames >= 1', 60000);
+    console.log(`load to first frame ${l}: ${(await page.evaluate('shadowsPage.firstFrameMs')).toFixed(0)} ms`);
+    await page.close();
+  }
+} finally {
+  await browser.close();
+  await server.close();
+  fs.rmSync(report, { force: true });
+}
+const ratio = median(frame.web) / median(frame.native);
+console.log(`${lesson} at ${size}: web median ${median(frame.web).toFixed(2)} ms, native median ` +
+            `${median(frame.native).toFixed(2)} ms: ${ratio.toFixed(2)}x (target <= 2x), ${rounds} interleaved rounds`);
+console.log(`${lesson} load to first frame: median ${median(firstFrame).toFixed(0)} ms (target <= 3000 ms)`);
+console.log(`load average at end: ${os.loadavg().map((x) => x.toFixed(2)).join(' ')}`);

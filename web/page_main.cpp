@@ -1,0 +1,101 @@
+// main() of a lesson's web page. shell.html turns the page's query (?scene=dueling&size=640x480)
+// into the command line (--set scene=dueling --size 640x480), which the lesson binaries' own
+// parser reads; bad input is shown on the page as the same one line, and the lesson then runs
+// with its defaults. The window loop (window.cpp) runs one frame per browser frame.
+#include <emscripten.h>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "app.hpp"
+#include "gl.hpp"
+#include "text.hpp"
+
+namespace {
+
+using shadows::Runner;
+
+std::unique_ptr<Runner> g_runner;
+long long g_frames = 0;
+
+// A line for the reader, on the page (not only in the console).
+void notice(const std::string& line, const std::string& note) {
+  std::fprintf(stderr, "%s\n", line.c_str());
+  EM_ASM({ shadowsPage.notice(UTF8ToString($0), UTF8ToString($1)); }, line.c_str(), note.c_str());
+}
+
+void failed(const std::string& line) {
+  std::fprintf(stderr, "%s\n", line.c_str());
+  EM_ASM({ shadowsPage.failed(UTF8ToString($0)); }, line.c_str());
+}
+
+// Frame count and GL errors every frame (the tests wait on them), the panel's cost lines four
+// times a second or so.
+void publish() {
+  const bool text = g_frames % 15 == 1;
+  const std::string cost = text ? g_runner->costSummary() : std::string();
+  const std::string counters = text ? g_runner->counterSummary() : std::string();
+  EM_ASM({ shadowsPage.frame($0, $1, $2 ? UTF8ToString($3) : null, UTF8ToString($4)); },
+         static_cast<double>(g_frames), shadows::GlErrorLog::count(), text ? 1 : 0, cost.c_str(),
+         counters.c_str());
+}
+
+void frame() {
+  try {
+    const bool more = g_runner->windowFrame();
+    ++g_frames;
+    publish();
+    if (!more) {
+      g_runner->closeWindow();
+      emscripten_cancel_main_loop();
+    }
+  } catch (const std::exception& e) {
+    failed(g_runner->lessonName() + ": " + shadows::printable(e.what()));
+    emscripten_cancel_main_loop();
+  }
+}
+
+}  // namespace
+
+extern "C" EMSCRIPTEN_KEEPALIVE void shadows_screenshot() {
+  if (g_runner) g_runner->requestScreenshot();
+}
+
+int main(int argc, char** argv) {
+  const std::string name = shadows::registeredLessons().at(0);
+  const auto make = [&](shadows::RunOptions options) {
+    options.force_window = true;
+    options.truth = false;  // no ray-traced truth in the browser yet (Runner::traceTruth)
+    return std::make_unique<Runner>(name, shadows::makeLesson(name), options);
+  };
+  try {
+    shadows::RunOptions options;
+    std::string problem = shadows::parseCommandLine(argc, argv, options);
+    if (problem.empty()) {
+      g_runner = make(options);
+      problem = g_runner->applySets(options.sets);
+      if (problem.empty()) problem = g_runner->checkConsistency();
+    }
+    if (!problem.empty()) {
+      // The command line's message, word for word; then the lesson's defaults (at the size
+      // asked for, when that was not what was wrong), as a student expects.
+      notice(name + ": " + shadows::printable(problem), "running with the defaults instead");
+      shadows::RunOptions defaults;
+      if (g_runner) {
+        defaults = options;
+        defaults.sets.clear();
+      }
+      g_runner = make(defaults);
+    }
+    if (!g_runner->openWindow()) {
+      failed(name + ": cannot open a WebGL 2 canvas");
+      return 1;
+    }
+  } catch (const std::exception& e) {
+    failed(name + ": " + shadows::printable(e.what()));
+    return 1;
+  }
+  emscripten_set_main_loop(frame, 0, true);
+  return 0;
+}

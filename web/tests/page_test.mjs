@@ -1,0 +1,217 @@
+// The browser test of one lesson page (ctest WebPage.<lesson>): headless Chromium opens the page
+// (built by emscripten into build/web/site) and checks what a student would see:
+//  - every view renders frames with no exception and no GL error, and its picture is within the
+//    golden tolerance (tests/golden/README.md: at most 16 of 320x240 pixels differ at all) of
+//    the native gles30 lesson's picture of the same configuration;
+//  - the page with its panel renders too (its screenshot is kept: README's picture);
+//  - a bad query parameter shows, on the page, the very line the command line prints for it,
+//    and the lesson runs with its defaults;
+//  - without WebGL 2 the page says so instead of showing a blank canvas.
+//
+//   node web/tests/page_test.mjs LESSON SITE_DIR NATIVE_BINARY OUT_DIR
+import { execFileSync, spawnSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import { decodePng, launch, meanDifference, open, pixelsDiffering, serve, sideBySide } from './browser.mjs';
+
+const [lesson, site, native, outDir] = process.argv.slice(2);
+if (!outDir) {
+  console.error('usage: page_test.mjs LESSON SITE_DIR NATIVE_BINARY OUT_DIR');
+  process.exit(2);
+}
+const kSize = '320x240';
+// Two rasterizers (SwiftShader here, llvmpipe natively) agree on a picture only up to the
+// rounding of shading and of edges: tests/golden/README.md, "The browser against native".
+const kMoved8Fraction = Number(process.env.SHADOWS_WEB_MOVED8 ?? 0.002);  // of the pixels
+const kMeanLevels = Number(process.env.SHADOWS_WEB_MEAN ?? 0.25);
+// Views that show a depth's last bits, which SwiftShader and llvmpipe round differently: lesson
+// 03 has no bias on purpose, and its lit casters show acne, a moire of those roundings
+// (measured 750-1546 pixels moved, mean 0.8-2.5 levels); 06's difference view marks where 8
+// bits and the exact depth disagree on the casters (243, mean 0.24); 07's digit views draw
+// the little digit's contours (226-924 pixels, mean 0.5-0.9). Those views get room for it, no
+// more than the control below leaves failing.
+const kRoundingViews = {
+  '03_shadow_map_basic': ['shaded', 'visibility', 'light_view', 'compare'],
+  '06_dual_texture_8bit': ['difference'],
+  '07_multidigit_16bit': ['big_digit', 'little_digit', 'passes'],
+};
+const kRoundingMoved8Fraction = 0.03, kRoundingMeanLevels = 3.5;
+// "" when `web` is within that tolerance of `native`, else what is off.
+function compare(web, native, name, view = 'shaded') {
+  const rounding = (kRoundingViews[lesson] ?? []).includes(view);
+  const fraction = rounding ? kRoundingMoved8Fraction : kMoved8Fraction;
+  const meanLimit = rounding ? kRoundingMeanLevels : kMeanLevels;
+  const moved8 = pixelsDiffering(web, native, 8), mean = meanDifference(web, native);
+  const limit = Math.floor(fraction * web.width * web.height);
+  console.log(`${lesson} ${name}: ${pixelsDiffering(web, native, 0)} pixels differ from native ` +
+              `gles30, ${moved8} by more than 8 levels (at most ${limit}), mean ${mean.toFixed(3)} ` +
+              `levels (at most ${meanLimit})`);
+  if (moved8 <= limit && mean <= meanLimit) return '';
+  fs.writeFileSync(path.join(outDir, `${lesson}.${name}.diff.png`), sideBySide(web, native));
+  return `${moved8} pixels moved by more than 8 levels (at most ${limit}), mean ${mean.toFixed(3)} ` +
+         `(at most ${meanLimit}); web | native | moved: ${lesson}.${name}.diff.png`;
+}
+fs.mkdirSync(outDir, { recursive: true });
+let failures = 0;
+const fail = (what) => { console.log(`FAIL ${lesson}: ${what}`); ++failures; };
+
+// The views the lesson offers, as its own --list-params says.
+const views = (() => {
+  const list = execFileSync(native, ['--list-params'], { encoding: 'utf8' });
+  const line = list.split('\n').find((l) => /^view\b/.test(l));
+  const choices = line?.match(/\{([^}]*)\}|one of ([^\s].*)$/);
+  const names = (choices?.[1] ?? choices?.[2] ?? '').split(/[|, ]+/).filter(Boolean);
+  if (!names.includes('shaded')) throw new Error(`no views in --list-params: ${line}`);
+  return names;
+})();
+
+// The native gles30 lesson's picture (and, for bad input, its message and exit code).
+function nativeRun(sets, out) {
+  const args = ['--headless', '--no-truth', '--size', kSize, '--frames', '1', '--out', out];
+  for (const s of sets) args.push('--set', s);
+  return spawnSync(native, args, { encoding: 'utf8', env: { ...process.env, MESA_GLES_VERSION_OVERRIDE: '3.0' } });
+}
+
+// Renders frames, asks for a screenshot (the F12 key's: <lesson>_screenshot_N.png in the
+// page's file system), returns it decoded.
+const shotsTaken = new Map();
+async function screenshot(page, name) {
+  const frames = await page.evaluate('shadowsPage.frames');
+  await page.waitFor(`shadowsPage.frames >= ${frames + 3}`);
+  const n = (shotsTaken.get(page) ?? 0) + 1;
+  shotsTaken.set(page, n);
+  const file = `/${lesson}_screenshot_${n}.png`;
+  await page.evaluate('Module._shadows_screenshot()');
+  await page.waitFor(`Module.FS.analyzePath('${file}').exists`);
+  const b64 = await page.evaluate(`(() => {
+    Module.FS.chmod('${file}', 0o644);  // written 0000 in MEMFS, which has no umask
+    const bytes = Module.FS.readFile('${file}');
+    let s = '';
+    for (let i = 0; i < bytes.length; i += 0x8000) s += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
+    return btoa(s);
+  })()`);
+  const png = Buffer.from(b64, 'base64');
+  fs.writeFileSync(path.join(outDir, name), png);
+  return decodePng(png);
+}
+
+// What every page must show: frames, no exception, no GL error, no failure line.
+async function checkClean(page, what) {
+  const state = await page.evaluate('({frames: shadowsPage.frames, glErrors: shadowsPage.glErrors, errors: shadowsPage.errors})');
+  if (state.frames < 3) fail(`${what}: ${state.frames} frames rendered`);
+  if (state.glErrors !== 0) fail(`${what}: ${state.glErrors} GL errors`);
+  for (const e of state.errors) fail(`${what}: page error: ${e}`);
+  for (const e of page.exceptions) fail(`${what}: exception: ${e}`);
+  for (const c of page.console) {
+    if (c.type === 'error' || /GL error|GL_INVALID|WebGL: /.test(c.text)) fail(`${what}: console ${c.type}: ${c.text}`);
+  }
+}
+
+const server = await serve(site);
+const browser = await launch();
+try {
+  // Every view against the native gles30 picture of the same configuration.
+  for (const view of views) {
+    const page = await open(browser, `${server.url}${lesson}.html?size=${kSize}&hide-panel&view=${view}`);
+    try {
+      await page.waitFor('shadowsPage.frames >= 5 || shadowsPage.errors.length > 0');
+      const web = await screenshot(page, `${lesson}.${view}.web.png`);
+      await checkClean(page, `view=${view}`);
+      if (view === 'truth' || view === 'error') {
+        // No truth in the browser yet: a plain picture (Frame::kNoTruthColor), said in the panel.
+        const first = web.rgba.subarray(0, 4);
+        let plain = true;
+        for (let i = 0; i < web.rgba.length; i += 4) plain &&= web.rgba[i] === first[0] && web.rgba[i + 1] === first[1];
+        if (!plain) fail(`view=${view}: expected the plain "truth not available" picture`);
+        continue;
+      }
+      const ref = path.join(outDir, `${lesson}.${view}.native.png`);
+      const run = nativeRun([`view=${view}`], ref);
+      if (run.status !== 0) {
+        fail(`view=${view}: native gles30 run failed (${run.status}): ${run.stderr.trim()}`);
+        continue;
+      }
+      const why = compare(web, decodePng(fs.readFileSync(ref)), `view=${view}`, view);
+      if (why) fail(`view=${view}: ${why}`);
+      if (view === 'shaded') {
+        // The control: the same comparison must tell a 1-degree zoom (camera.fov) apart, or
+        // the tolerance above would pass pictures that differ.
+        const fov = Number(execFileSync(native, ['--list-params'], { encoding: 'utf8' })
+                               .match(/^camera\.fov\s+float\s+default\s+([0-9.]+)/m)[1]);
+        const zoomed = path.join(outDir, `${lesson}.zoomed.native.png`);
+        nativeRun([`camera.fov=${fov + 1}`], zoomed);
+        if (!compare(web, decodePng(fs.readFileSync(zoomed)), 'control (camera.fov+1)', view)) {
+          fail('the tolerance cannot tell the picture from one zoomed by camera.fov+1');
+        }
+      }
+    } finally {
+      await page.close();
+    }
+  }
+
+  // The page as a student opens it: panel and all, at the command line's default size.
+  {
+    const page = await open(browser, `${server.url}${lesson}.html`);
+    // 08's slices cost SwiftShader about a second a frame at this size.
+    await page.waitFor('shadowsPage.frames >= 5 || shadowsPage.errors.length > 0', 60000);
+    const before = await screenshot(page, `${lesson}.page.png`);
+    // The orbit camera: a drag across the canvas, right of the panel, turns the view.
+    const box = await page.evaluate(`(() => { const r = document.getElementById('canvas').getBoundingClientRect(); return {x: r.x, y: r.y, w: r.width, h: r.height}; })()`);
+    const at = (fx, fy) => ({ x: box.x + fx * box.w, y: box.y + fy * box.h });
+    await page.send('Input.dispatchMouseEvent', { type: 'mouseMoved', ...at(0.6, 0.5) });
+    await page.send('Input.dispatchMouseEvent', { type: 'mousePressed', button: 'left', buttons: 1, clickCount: 1, ...at(0.6, 0.5) });
+    for (let i = 1; i <= 5; ++i) {
+      await page.send('Input.dispatchMouseEvent', { type: 'mouseMoved', button: 'left', buttons: 1, ...at(0.6 + 0.04 * i, 0.5) });
+      const frames = await page.evaluate('shadowsPage.frames');
+      await page.waitFor(`shadowsPage.frames > ${frames}`, 60000);
+    }
+    await page.send('Input.dispatchMouseEvent', { type: 'mouseReleased', button: 'left', buttons: 0, clickCount: 1, ...at(0.8, 0.5) });
+    const after = await screenshot(page, `${lesson}.page.orbited.png`);
+    const turned = pixelsDiffering(before, after, 8);
+    console.log(`${lesson} orbit: a drag moved ${turned} pixels by more than 8 levels`);
+    if (turned < 0.05 * before.width * before.height) fail(`a drag on the canvas did not orbit the camera (${turned} pixels moved)`);
+    await checkClean(page, 'page with panel');
+    const status = await page.evaluate(`document.getElementById('status').textContent`);
+    if (!/shown every [0-9.]+ ms/.test(status) || !/frame [0-9.]+ ms/.test(status)) fail(`page with panel: no frame time on the page ("${status}")`);
+    await page.close();
+  }
+
+  // Bad input: an unknown parameter and one out of range, each the command line's line.
+  for (const bad of ['no.such.param=1', 'camera.fov=500']) {
+    const run = nativeRun([bad], path.join(outDir, 'unused.png'));
+    const expected = run.stderr.trim();
+    if (run.status !== 2 || expected.split('\n').length !== 1) fail(`native --set ${bad}: exit ${run.status}, "${expected}"`);
+    const page = await open(browser, `${server.url}${lesson}.html?size=${kSize}&hide-panel&${bad}`);
+    await page.waitFor('shadowsPage.frames >= 5 || shadowsPage.errors.length > 0');
+    const shown = await page.evaluate(`({notices: shadowsPage.notices, box: document.getElementById('notice').textContent})`);
+    if (shown.notices[0] !== expected || !shown.box.includes(expected)) {
+      fail(`?${bad}: page says ${JSON.stringify(shown.notices)}, the command line "${expected}"`);
+    }
+    page.console = page.console.filter((c) => c.text !== expected);  // the line is in the console too
+    await checkClean(page, `?${bad}`);
+    const web = await screenshot(page, `${lesson}.bad.web.png`);
+    const ref = path.join(outDir, `${lesson}.shaded.native.png`);
+    if (!fs.existsSync(ref) || compare(web, decodePng(fs.readFileSync(ref)), `?${bad}`)) {
+      fail(`?${bad}: the picture is not the defaults' picture`);
+    }
+    await page.close();
+  }
+} finally {
+  await browser.close();
+}
+
+// Without WebGL 2: a clear message, no blank canvas.
+{
+  const bare = await launch(['--disable-webgl2', '--disable-webgl']);
+  try {
+    const page = await open(bare, `${server.url}${lesson}.html`);
+    await page.waitFor(`document.readyState === 'complete'`);
+    const said = await page.evaluate(`shadowsPage.errors.join(' ')`);
+    if (!/needs WebGL 2/.test(said)) fail(`without WebGL 2 the page says "${said}"`);
+  } finally {
+    await bare.close();
+  }
+}
+await server.close();
+console.log(failures === 0 ? `PASS ${lesson}` : `${failures} failure(s)`);
+process.exit(failures === 0 ? 0 : 1);
