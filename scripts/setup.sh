@@ -7,7 +7,8 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 packages=(build-essential cmake pkg-config python3-glad
   libglfw3-dev libglm-dev libosmesa6-dev libegl-dev libegl-mesa0 libimgui-dev libstb-dev
-  libembree-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev xvfb xauth gnuplot-nox nodejs)
+  libembree-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev xvfb xauth gnuplot-nox nodejs
+  emscripten chromium)  # the pages and their browser tests (setup_pages.sh), before configuring
 # Debian packs npm apart from node; some nodejs packages (NodeSource's) bring their own.
 command -v npm >/dev/null || packages+=(npm)
 source scripts/packages.sh
