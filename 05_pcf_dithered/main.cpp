@@ -86,17 +86,13 @@ class PcfDithered final : public Lesson {
       map_.texture().bind(0);
       const bool linear = mode == pcf::Mode::Hw2x2 || linear_filter_.name() == "linear";
       (linear ? linear_ : nearest_).bind(0);
-      const Program& e =
-          eye_programs_.get({mode_.defines(), early_out_.defines(), define("PCF_COUNT", counting),
-                             f.viewDefines(), define("SHADOW_OFF", map_.off())});
+      const Program& e = eye_programs_.get({mode_.defines(), early_out_.defines(),
+                                            kernelDefines(mode), define("PCF_COUNT", counting),
+                                            f.viewDefines(), define("SHADOW_OFF", map_.off())});
       e.set("uViewProjection", f.projection * f.view);
       e.set("uShadowMatrix", map_.textureMatrix());  // B * P_light * V_light
       e.set("uShadowMap", 0);
-      e.set("uGridSide", grid);
-      // The offsets the unit tests check are the ones the shader takes (pcf_math.hpp).
-      const std::vector<glm::vec2> taps = pcf::tapOffsets(mode, taps_(), radius);
-      e.set("uTaps", taps);
-      e.set("uPoissonTaps", static_cast<int>(taps.size()));
+      e.set("uRadius", radius);
       e.set("uTexel", glm::vec2(1.0f / static_cast<float>(map_.width()),
                                 1.0f / static_cast<float>(map_.height())));
       f.setLightingUniforms(e, dimming_());
@@ -170,6 +166,22 @@ class PcfDithered final : public Lesson {
   }
 
  private:
+  // The kernel compiled into the variant: its offsets for a radius of one texel, from
+  // pcf_math.hpp (what the unit tests check), as a constant array; pcf.glsl scales them by
+  // the radius, the one kernel setting left a uniform. A new variant per grid side (8) or
+  // Poisson tap count (61): pcf.taps is a setting of the kernel's shape, not a slider of its
+  // size.
+  std::vector<std::string> kernelDefines(pcf::Mode mode) const {
+    if (mode == pcf::Mode::None || mode == pcf::Mode::Hw2x2) return {};
+    const std::vector<glm::vec2> unit = pcf::unitTapOffsets(mode, taps_());
+    std::vector<std::string> lines = {defineVec2Array("PCF_UNIT_TAPS", unit)};
+    if (mode == pcf::Mode::Grid)
+      lines.push_back(define("PCF_GRID_SIDE", pcf::gridSide(taps_()))[0]);
+    lines.push_back(
+        define("PCF_TAP_COUNT", static_cast<int>(unit.size()))[0]);  // what the report names
+    return lines;
+  }
+
   // The kernel's penumbra matched where it matters most (pcf::areaLightRadius): the ray from
   // the light through the casters' centre, and the receiver the casters rest on (their
   // lowest point) further along it. The texel size is taken at that receiver.

@@ -1,17 +1,30 @@
 // Percentage-closer filtering (Reeves 1987; seed 000 "Hardware Shadow Map Filtering"): compare
 // first, then average the results, never the depths. Every tap is one sampler2DShadow lookup.
-// The tap offsets are not computed here: pcf_math.hpp (tapOffsets) computes them on the CPU
-// and main.cpp passes them as uTaps, so the unit tests check the very offsets the shader uses.
+// The tap offsets are not computed here: pcf_math.hpp (unitTapOffsets) computes them on the
+// CPU and main.cpp compiles them in, so the unit tests check the very offsets the shader uses.
 #include "border.glsl"
 uniform sampler2DShadow uShadowMap;
 // Compiled per setting (main.cpp): PCF_MODE is pcf.mode (PCF_MODE_NONE .. PCF_MODE_POISSON);
-// PCF_EARLY_OUT 1: stop after 4 probe taps that agree.
-uniform int uGridSide;    // grid: N for N x N taps
-uniform int uPoissonTaps; // poisson: how many of the 64 points
-uniform vec2 uTexel;      // 1 / map size
-// Offsets in texels: grid, row by row (N x N); dithered, 4 per pixel-parity pattern
-// (pattern = x mod 2 + 2 (y mod 2)); poisson, the disk's points in order, scaled.
-uniform vec2 uTaps[64];
+// PCF_EARLY_OUT 1: stop after 4 probe taps that agree. The kernel is compiled in too, so its
+// loops run to constants over constant offsets and unroll (a loop to a uniform count over a
+// uniform array cost the 3x3 grid about twice its lookups): PCF_TAP_COUNT offsets
+// PCF_UNIT_TAPS for a radius of one texel, in texels: grid, row by row (PCF_GRID_SIDE ^ 2);
+// dithered, 4 per pixel-parity pattern (pattern = x mod 2 + 2 (y mod 2)); poisson, the disk's
+// points in order.
+#ifdef PCF_TAP_COUNT
+const vec2 kUnitTaps[PCF_TAP_COUNT] = PCF_UNIT_TAPS;
+#endif
+uniform float uRadius;  // kernel half-width in texels: the one setting of the kernel not compiled
+uniform vec2 uTexel;    // 1 / map size
+
+// `precise` keeps offset = unit * radius one rounded multiply, as tapOffsets() computes it,
+// instead of letting the compiler fold the radius into uTexel first (OpenGL ES 3.0 has no
+// precise; there an offset may round differently in its last bit).
+#ifdef GL_ES
+#define PRECISE
+#else
+#define PRECISE precise
+#endif
 
 int gTaps = 0;         // taps this fragment took (counted, see scene.frag)
 bool gStopped = false;  // the probes agreed and the rest were skipped
@@ -23,16 +36,25 @@ float tap(vec3 c, vec2 offsetTexels) {
   return texture(uShadowMap, vec3(uv, c.z));
 }
 
+#ifdef PCF_TAP_COUNT
+// Tap k of the compiled kernel.
+float kernelTap(vec3 c, int k) {
+  PRECISE vec2 offsetTexels = kUnitTaps[k] * uRadius;
+  return tap(c, offsetTexels);
+}
+#endif
+
 // N x N taps at the midpoints of a box of half-width radius: the box filter's midpoint rule.
+#if PCF_MODE == PCF_MODE_GRID
 float pcfGrid(vec3 c) {
-  int n = uGridSide, last = n - 1;
+  const int n = PCF_GRID_SIDE, last = n - 1;
   float sum = 0.0;
-  bool probed = PCF_EARLY_OUT == 1 && n > 2;
+  const bool probed = PCF_EARLY_OUT == 1 && n > 2;
   if (probed) {
     // The four corners first: if they agree, the neighbourhood is fully lit or fully shadowed
     // (unless something smaller than the kernel hides between them) and the rest is skipped.
-    sum = tap(c, uTaps[0]) + tap(c, uTaps[last]) + tap(c, uTaps[last * n]) +
-          tap(c, uTaps[last * n + last]);
+    sum = kernelTap(c, 0) + kernelTap(c, last) + kernelTap(c, last * n) +
+          kernelTap(c, last * n + last);
     if (sum == 0.0 || sum == 4.0) {
       gStopped = true;
       return sum * 0.25;
@@ -41,39 +63,43 @@ float pcfGrid(vec3 c) {
   for (int j = 0; j < n; ++j) {
     for (int i = 0; i < n; ++i) {
       if (probed && (i == 0 || i == last) && (j == 0 || j == last)) continue;  // done above
-      sum += tap(c, uTaps[j * n + i]);
+      sum += kernelTap(c, j * n + i);
     }
   }
   return sum / float(n * n);
 }
+#endif
 
 // Seed 001 "PCF with Dithering": 4 taps whose pattern depends on gl_FragCoord mod 2. The four
 // patterns of a 2 x 2 pixel block together are the 4 x 4 grid of the same radius.
+#if PCF_MODE == PCF_MODE_DITHERED
 float pcfDithered(vec3 c) {
   ivec2 parity = ivec2(mod(floor(gl_FragCoord.xy), 2.0));
   int first = 4 * (parity.x + 2 * parity.y);
   float sum = 0.0;
-  for (int k = 0; k < 4; ++k) sum += tap(c, uTaps[first + k]);
+  for (int k = 0; k < 4; ++k) sum += kernelTap(c, first + k);
   return sum * 0.25;
 }
+#endif
 
 // Seed 003 slide 71: Poisson-disk samples (pcf_math.hpp poissonDisk: each prefix is spread
 // out, the first four on the rim so they double as the early-out probes).
+#if PCF_MODE == PCF_MODE_POISSON
 float pcfPoisson(vec3 c) {
-  int n = uPoissonTaps;
+  const int n = PCF_TAP_COUNT;
+  const bool probed = PCF_EARLY_OUT == 1 && n > 4;
   float sum = 0.0;
-  int first = 0;
-  if (PCF_EARLY_OUT == 1 && n > 4) {
-    for (int k = 0; k < 4; ++k) sum += tap(c, uTaps[k]);
+  if (probed) {
+    for (int k = 0; k < 4; ++k) sum += kernelTap(c, k);
     if (sum == 0.0 || sum == 4.0) {
       gStopped = true;
       return sum * 0.25;
     }
-    first = 4;
   }
-  for (int k = first; k < n; ++k) sum += tap(c, uTaps[k]);
+  for (int k = probed ? 4 : 0; k < n; ++k) sum += kernelTap(c, k);
   return sum / float(n);
 }
+#endif
 
 // c: (s, t, r) after the divide by q.
 float percentageCloser(vec3 c) {

@@ -1,12 +1,14 @@
 // The arithmetic of lesson 05 in plain C++ (no GL): why depths are never averaged, the
 // kernels' tap offsets, and the radius of the area light a kernel imitates. The offsets are
-// not a mirror: main.cpp hands tapOffsets() to pcf.glsl as its uTaps array, so what the unit
-// tests check is what the shader uses.
+// not a mirror: main.cpp compiles unitTapOffsets() into pcf.glsl as a constant array, which the
+// shader scales by the radius as tapOffsets() does, so what the unit tests check is what the
+// shader uses.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
@@ -52,14 +54,14 @@ inline std::vector<glm::vec2> gridOffsets(int n, float radius) {
   return taps;
 }
 
-// Seed 001's four dithered taps for the pixel at (x, y) (gl_FragCoord, floored).
+// Seed 001's four dithered taps for the pixel at (x, y) (gl_FragCoord, floored). The seed
+// writes them with swidth = radius / 2: (-1.5, 1.5), (-1.5, -0.5), (0.5, 1.5), (0.5, -0.5)
+// times swidth, shifted by (x mod 2, -(y mod 2)) swidth. Here as a unit pattern (exact in
+// float) times the radius, the one rounding the shader's unit offset times radius makes too.
 inline std::array<glm::vec2, 4> ditheredOffsets(int x, int y, float radius) {
-  const float swidth = 0.5f * radius;
-  const glm::vec2 o = glm::vec2(static_cast<float>(x % 2), static_cast<float>(y % 2)) * swidth;
-  return {glm::vec2(-1.5f * swidth + o.x, 1.5f * swidth - o.y),
-          glm::vec2(-1.5f * swidth + o.x, -0.5f * swidth - o.y),
-          glm::vec2(0.5f * swidth + o.x, 1.5f * swidth - o.y),
-          glm::vec2(0.5f * swidth + o.x, -0.5f * swidth - o.y)};
+  const glm::vec2 o = 0.5f * glm::vec2(static_cast<float>(x % 2), -static_cast<float>(y % 2));
+  return {(glm::vec2(-0.75f, 0.75f) + o) * radius, (glm::vec2(-0.75f, -0.25f) + o) * radius,
+          (glm::vec2(0.25f, 0.75f) + o) * radius, (glm::vec2(0.25f, -0.25f) + o) * radius};
 }
 
 // Seed 003 slide 71: a progressive Poisson disk in the unit circle (each prefix is spread
@@ -98,19 +100,19 @@ inline int gridSide(int taps) {
   return n;
 }
 
-// What pcf.glsl's uTaps holds, in texels: grid, N x N row by row (N = gridSide(taps));
-// dithered, the four patterns of ditheredOffsets one after another, pattern x + 2y for the
-// pixel parity (x, y); poisson, the first `taps` disk points (at least 4) times the radius;
-// none and hw2x2, the one tap at the centre.
-inline std::vector<glm::vec2> tapOffsets(Mode mode, int taps, float radius) {
+// The kernel's offsets for a radius of one texel, which main.cpp compiles into pcf.glsl (as
+// PCF_UNIT_TAPS): grid, N x N row by row (N = gridSide(taps)); dithered, the four patterns of
+// ditheredOffsets one after another, pattern x + 2y for the pixel parity (x, y); poisson, the
+// first `taps` disk points (at least 4); none and hw2x2, the one tap at the centre.
+inline std::vector<glm::vec2> unitTapOffsets(Mode mode, int taps) {
   switch (mode) {
     case Mode::Grid:
-      return gridOffsets(gridSide(taps), radius);
+      return gridOffsets(gridSide(taps), 1.0f);
     case Mode::Dithered: {
       std::vector<glm::vec2> offsets;
       for (int y = 0; y < 2; ++y) {
         for (int x = 0; x < 2; ++x) {
-          for (const glm::vec2& o : ditheredOffsets(x, y, radius)) offsets.push_back(o);
+          for (const glm::vec2& o : ditheredOffsets(x, y, 1.0f)) offsets.push_back(o);
         }
       }
       return offsets;
@@ -118,13 +120,20 @@ inline std::vector<glm::vec2> tapOffsets(Mode mode, int taps, float radius) {
     case Mode::Poisson: {
       // Fewer than 4 points all sit off centre and would shift the shadow sideways.
       const auto n = static_cast<size_t>(std::clamp(taps, 4, 64));
-      std::vector<glm::vec2> offsets;
-      for (size_t k = 0; k < n; ++k) offsets.push_back(poissonDisk()[k] * radius);
-      return offsets;
+      return {poissonDisk().begin(), poissonDisk().begin() + static_cast<std::ptrdiff_t>(n)};
     }
     default:
       return {glm::vec2(0.0f)};
   }
+}
+
+// The offsets in texels a fragment's taps take: unitTapOffsets times the radius, one float
+// multiply each, as pcf.glsl computes them (for the grid and the disk the same floats as
+// gridOffsets(n, radius) and poissonDisk() * radius).
+inline std::vector<glm::vec2> tapOffsets(Mode mode, int taps, float radius) {
+  std::vector<glm::vec2> offsets = unitTapOffsets(mode, taps);
+  for (glm::vec2& o : offsets) o *= radius;
+  return offsets;
 }
 
 // The radius of the disk light whose penumbra a kernel of `kernelTexels` half-width imitates.

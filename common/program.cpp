@@ -1,6 +1,7 @@
 // Shader programs from files: #include resolved, compile errors as file:line, variants
 // selected by #defines and compiled on first use.
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <fstream>
 #include <glm/gtc/type_ptr.hpp>
@@ -132,6 +133,27 @@ GLuint compile(GLenum stage, const std::filesystem::path& file,
 }
 
 }  // namespace
+
+namespace {
+// The shortest decimal that reads back as `v` (std::to_chars), with a point or an exponent
+// so that GLSL takes it as a float.
+std::string glslFloat(float v) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, v).ptr;
+  std::string out(text, end);
+  if (out.find_first_of(".en") == std::string::npos) out += ".0";
+  return out;
+}
+}  // namespace
+
+std::string defineVec2Array(const std::string& name, const std::vector<glm::vec2>& values) {
+  std::string line = name + " vec2[](";
+  for (size_t i = 0; i < values.size(); ++i) {
+    line +=
+        (i ? ", vec2(" : "vec2(") + glslFloat(values[i].x) + ", " + glslFloat(values[i].y) + ")";
+  }
+  return line + ")";
+}
 
 ShaderSource preprocessShader(const std::filesystem::path& file) {
   ShaderSource out;

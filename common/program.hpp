@@ -67,6 +67,11 @@ inline std::vector<std::string> define(const std::string& name, int value) {
   return {name + " " + std::to_string(value)};
 }
 
+// One #define line "NAME vec2[](vec2(x, y), ...)": constants computed in C++ compiled into a
+// shader (`const vec2 k[N] = NAME;`). Each float is written so that it reads back as the same
+// float, so the shader computes with exactly the values the C++ (and its tests) has.
+std::string defineVec2Array(const std::string& name, const std::vector<glm::vec2>& values);
+
 // The preprocessed source and the file behind each GLSL source-string number.
 struct ShaderSource {
   std::string text;
