@@ -5,6 +5,7 @@
 
 #include "json.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 
@@ -160,6 +161,48 @@ TEST(Lesson05, EachKernelTakesTheTapsItSays) {
                 static_cast<double>(c.taps_per_fragment), 1e-9)
         << label(sets);
   }
+}
+
+TEST(Lesson05, CompiledKernelsDrawTheUniformArrayKernelsPicturesByteForByte) {
+  // Each kernel is compiled into its variant (grid side, tap count and unit offsets as
+  // constants, the radius a uniform) so that its loops unroll (issue 20). The pictures must not
+  // move: these are FNV-1a hashes of the RGBA rows (bottom-up, Image::rgba) of pictures the
+  // uniform-array shader drew (main at 04dd8d6: `05_pcf_dithered --headless --size 160x120
+  // --set ...`, read back from its PNGs). Another Mesa may draw other bytes: then see
+  // tests/golden/README.md.
+  struct Case {
+    std::vector<std::string> sets;
+    std::uint64_t hash;
+  };
+  const Case cases[] = {
+      {{"pcf.mode=grid", "pcf.taps=9", "pcf.radius=1.5", "pcf.early_out=false"},
+       0x97450fcc4e6383e3},
+      {{"pcf.mode=grid", "pcf.taps=9", "pcf.radius=1.5"}, 0x97450fcc4e6383e3},
+      {{"pcf.mode=grid", "pcf.taps=64", "pcf.radius=2.3"}, 0x1e644bb74b403868},
+      {{"pcf.mode=grid", "pcf.taps=20", "pcf.radius=4", "pcf.early_out=false"}, 0x74344000b8fdeb45},
+      {{"pcf.mode=grid", "pcf.taps=4", "pcf.radius=1"}, 0x29c6d24c43d238d5},
+      {{"pcf.mode=dithered", "pcf.radius=2.3"}, 0xb7f29954d644f9f9},
+      {{"pcf.mode=dithered", "pcf.radius=16"}, 0xf35e1fd6eb1c708c},
+      {{"pcf.mode=poisson", "pcf.taps=16", "pcf.radius=1.5"}, 0xd180b94017bbdac4},
+      {{"pcf.mode=poisson", "pcf.taps=9", "pcf.radius=2.3", "pcf.early_out=false"},
+       0xde554aa50a943b3d},
+      {{"pcf.mode=poisson", "pcf.taps=64", "pcf.radius=4"}, 0xe84e6a14bb49b160},
+      {{"pcf.mode=poisson", "pcf.taps=1", "pcf.radius=1"}, 0x68338609f7a939fb},
+      {{"pcf.mode=none"}, 0x6c928200f3764fa4},
+      {{"pcf.mode=hw2x2"}, 0x4f3de4ad178208d3},
+      {{"view=taps", "pcf.mode=poisson", "pcf.taps=12", "pcf.radius=2.3"}, 0x6b88877adf59da0c},
+      {{"view=visibility", "pcf.mode=grid", "pcf.taps=16"}, 0x1330b99b3d7e7f4d},
+  };
+  auto runner = startLesson(kLesson, {}, 160, 120);
+  for (const Case& c : cases) {
+    runner->params().resetToDefaults();
+    for (const std::string& set : c.sets) ASSERT_EQ(runner->params().assign(set), "") << set;
+    runner->renderFrame();
+    std::uint64_t hash = 0xcbf29ce484222325;  // FNV-1a
+    for (const std::uint8_t byte : runner->readImage().rgba) hash = (hash ^ byte) * 0x100000001b3;
+    EXPECT_EQ(hash, c.hash) << label(c.sets) << ": hash 0x" << std::hex << hash;
+  }
+  EXPECT_EQ(runner->glErrors(), 0);
 }
 
 TEST(Lesson05, EarlyOutSkipsMostTapsAndBarelyChangesTheShadow) {

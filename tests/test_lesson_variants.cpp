@@ -2,6 +2,7 @@
 // report names the variant each pass ran (shader_variants) and how many programs the run
 // compiled (shader_variants_compiled): both are work counters, so they are asserted here.
 #include "harness.hpp"
+#include "sweep_spec.hpp"
 
 namespace shadows {
 namespace {
@@ -87,6 +88,63 @@ TEST(Variants, Lesson05RunsOnlyItsOwnKernelAndNoInstrumentationWhenOff) {
   ASSERT_EQ(runner->params().set("shadow.off", "true"), "");
   runner->renderFrame();
   EXPECT_TRUE(ranVariantWith(*runner, "SHADOW_OFF=1"));
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
+// The one setting that is not a choice yet compiles variants (the exemption from "a slider
+// compiles none" above): pcf.taps sets the shape of lesson 05's kernel, its grid side or its
+// Poisson tap count, which are compiled in with their offsets so that the loops unroll (issue
+// 20). One variant per shape, at most 8 grids and 61 disks; none where the shape stays (taps
+// within one grid side; dithered, none and hw2x2 ignore them). The radius stays a uniform.
+TEST(Variants, Lesson05CompilesOneVariantPerKernelShapeAndNoneForItsRadius) {
+  auto runner = startLesson("05_pcf_dithered", {"pcf.mode=grid", "pcf.taps=9"}, 160, 120);
+  auto compiled = [&](const std::string& set) {
+    EXPECT_EQ(runner->params().assign(set), "");
+    runner->renderFrame();
+    return reportNumber(*runner, "shader_variants_compiled");
+  };
+  const double first = compiled("pcf.radius=2");
+  EXPECT_TRUE(ranVariantWith(*runner, "PCF_TAP_COUNT=9"));
+  EXPECT_EQ(compiled("pcf.taps=15"), first) << "still 3 x 3";
+  EXPECT_EQ(compiled("pcf.radius=5"), first) << "the radius is a uniform";
+  EXPECT_EQ(compiled("pcf.taps=16"), first + 1) << "4 x 4";
+  EXPECT_TRUE(ranVariantWith(*runner, "PCF_TAP_COUNT=16"));
+  EXPECT_EQ(compiled("pcf.taps=9"), first + 1) << "3 x 3 again: kept";
+  EXPECT_EQ(compiled("pcf.mode=dithered"), first + 2);
+  EXPECT_EQ(compiled("pcf.taps=64"), first + 2) << "dithered takes 4 taps whatever pcf.taps";
+  EXPECT_EQ(compiled("pcf.mode=poisson"), first + 3);
+  EXPECT_EQ(compiled("pcf.taps=63"), first + 4) << "a disk of 63";
+  EXPECT_EQ(compiled("pcf.radius=1"), first + 4);
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
+// What that costs a full run of lesson 05's sweep (05_pcf_dithered/sweep.cpp through
+// bench_sweep, which keeps one runner per lesson): every point of its axes, on one scene (no
+// scene enters a define), compiles one variant per kernel, 7. The radius and the map size
+// compile none.
+TEST(Variants, Lesson05FullSweepCompilesOneVariantPerKernel) {
+  const Sweep& sweep = registeredSweeps().at("05_pcf_dithered");
+  auto runner = startLesson("05_pcf_dithered", {"scene=" + sweep.scenes.at(0)}, 64, 48);
+  const double before = reportNumber(*runner, "shader_variants_compiled");
+  std::vector<std::vector<std::string>> points = {sweep.fixed};
+  for (const Axis& axis : sweep.axes) {
+    std::vector<std::vector<std::string>> more;
+    for (const auto& point : points) {
+      for (const std::string& value : axis.values) {
+        std::vector<std::string> sets = point;
+        for (const std::string& set : settingsOf(axis, value).second) sets.push_back(set);
+        more.push_back(sets);
+      }
+    }
+    points = std::move(more);
+  }
+  ASSERT_EQ(points.size(), 7u * 3u * 2u);
+  for (const auto& sets : points) {
+    runner->params().resetToDefaults();
+    for (const std::string& set : sets) ASSERT_EQ(runner->params().assign(set), "") << set;
+    runner->renderFrame();
+  }
+  EXPECT_EQ(reportNumber(*runner, "shader_variants_compiled") - before, 7.0);
   EXPECT_EQ(runner->glErrors(), 0);
 }
 

@@ -75,7 +75,8 @@ TEST(PcfMath, TheFourDitheredPatternsOfA2x2BlockAreThe16TapGrid) {
 }
 
 TEST(PcfMath, TheShadersTapArrayHoldsEachKernelCentredInItsLayout) {
-  // pcf.glsl indexes uTaps: grid row by row, dithered pattern x + 2y, poisson in disk order.
+  // pcf.glsl indexes the compiled offsets: grid row by row, dithered pattern x + 2y, poisson
+  // in disk order.
   auto centre = [](const std::vector<glm::vec2>& taps) {
     glm::vec2 sum(0.0f);
     for (const auto& t : taps) sum += t;
@@ -104,6 +105,28 @@ TEST(PcfMath, TheShadersTapArrayHoldsEachKernelCentredInItsLayout) {
   EXPECT_EQ(tapOffsets(Mode::Poisson, 1, 2.0f).size(), 4u) << "never fewer than the 4 probes";
   EXPECT_EQ(tapOffsets(Mode::None, 64, 5.0f), std::vector<glm::vec2>{glm::vec2(0.0f)});
   EXPECT_EQ(tapOffsets(Mode::Hw2x2, 64, 5.0f), std::vector<glm::vec2>{glm::vec2(0.0f)});
+}
+
+TEST(PcfMath, TheShaderScalesTheCompiledUnitOffsetsByTheRadiusAsTheCppDoes) {
+  // pcf.glsl takes unitTapOffsets() as constants and multiplies each by the radius (one
+  // rounding): the offsets of tapOffsets(), float for float, for any radius.
+  for (const Mode mode : {Mode::None, Mode::Grid, Mode::Dithered, Mode::Poisson}) {
+    for (const int taps : {1, 9, 20, 64}) {
+      for (const float radius : {0.0f, 1.5f, 2.3f, 16.0f}) {
+        std::vector<glm::vec2> scaled = unitTapOffsets(mode, taps);
+        for (glm::vec2& o : scaled) o *= radius;
+        EXPECT_EQ(tapOffsets(mode, taps, radius), scaled);
+      }
+    }
+  }
+  // The grid's and the disk's as they were before they were compiled in (uTaps, issue 20).
+  EXPECT_EQ(tapOffsets(Mode::Grid, 9, 2.3f), gridOffsets(3, 2.3f));
+  EXPECT_EQ(tapOffsets(Mode::Poisson, 64, 2.3f)[63], poissonDisk()[63] * 2.3f);
+  // Seed 001's dithered taps, (-1.5, 1.5) swidth + (x, -y) swidth with swidth = radius / 2:
+  // the unit pattern is exact, so for a radius whose quarters are exact the seed's sums agree.
+  const float swidth = 0.5f * 3.0f;
+  EXPECT_EQ(ditheredOffsets(1, 1, 3.0f)[0],
+            glm::vec2(-1.5f * swidth + swidth, 1.5f * swidth - swidth));
 }
 
 TEST(PcfMath, ThePoissonDiskFillsTheUnitDiskAndProbesOnItsRim) {
