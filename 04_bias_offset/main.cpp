@@ -71,8 +71,11 @@ class BiasOffset final : public Lesson {
   void init() override {
     depth_program_ =
         Program(lessonFile(LESSON_DIR, "depth.vert"), commonShaderDir() / "depth_only.frag");
-    eye_programs_ =
-        ProgramVariants(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
+    // Lesson 03's vertex shader: the light-space coordinates projected per vertex, so the
+    // modes that bias the map cost no more per fragment than 03 (normal offset alone projects
+    // its moved point per fragment, in scene.frag).
+    eye_programs_ = ProgramVariants(commonShaderDir() / "shadow_coord.vert",
+                                    lessonFile(LESSON_DIR, "scene.frag"));
     // The same depth texture read raw (no compare), border 1 like the map: "nothing in front".
     raw_sampler_ = Sampler::depth(/*compare=*/false);
   }

@@ -7,6 +7,7 @@
 
 in vec3 vWorld;
 in vec3 vNormal;
+in vec4 vShadowCoord;  // B * P_light * V_light * world, per vertex (shadow_coord.vert)
 uniform sampler2DShadow uShadowMap;  // compare mode on: 1 where B <= A
 uniform sampler2D uShadowDepth;      // the same texture read raw, for the gradient and the views
 uniform vec3 uColor;
@@ -23,9 +24,12 @@ out vec4 outColor;
 float shadowTerm(vec3 n, out float margin) {
   vec3 p = vWorld;
 #if BIAS_MODE == BIAS_MODE_NORMAL_OFFSET
+  // Normal offset moves the point before projecting it: only this mode projects per fragment.
   p = normalOffsetPoint(p, n, directionToLight(vWorld), uFactor);
-#endif
   vec4 c = uShadowMatrix * vec4(p, 1.0);
+#else
+  vec4 c = vShadowCoord;  // projected per vertex and interpolated, as in lesson 03
+#endif
   margin = 1.0;
   if (c.w <= 0.0) return 1.0;  // behind a spot light: outside its frustum
   c.xyz /= c.w;

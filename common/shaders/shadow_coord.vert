@@ -1,7 +1,7 @@
 #version 330 core
-// Pass 2 of a shadow map (lessons 03, 05): the eye's view. Each vertex also gets its position
-// in the light's texture space, (s, t, r, q) = B * P_light * V_light * M * p, for textureProj
-// to divide by q.
+// Pass 2 of a shadow map (lessons 03, 04, 05): the eye's view. Each vertex also gets its
+// position in the light's texture space, (s, t, r, q) = B * P_light * V_light * M * p, for
+// textureProj to divide by q.
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 uniform mat4 uModel;
