@@ -37,9 +37,9 @@ float tap(vec3 c, vec2 offsetTexels) {
 }
 
 #ifdef PCF_TAP_COUNT
-// Tap k of the compiled kernel.
-float kernelTap(vec3 c, int k) {
-  PRECISE vec2 offsetTexels = kUnitTaps[k] * uRadius;
+// A tap of the compiled kernel: a unit offset scaled by the radius.
+float kernelTap(vec3 c, vec2 unitOffset) {
+  PRECISE vec2 offsetTexels = unitOffset * uRadius;
   return tap(c, offsetTexels);
 }
 #endif
@@ -49,22 +49,27 @@ float kernelTap(vec3 c, int k) {
 float pcfGrid(vec3 c) {
   const int n = PCF_GRID_SIDE, last = n - 1;
   float sum = 0.0;
-  const bool probed = PCF_EARLY_OUT == 1 && n > 2;
-  if (probed) {
+#if PCF_EARLY_OUT == 1
+  if (n > 2) {
     // The four corners first: if they agree, the neighbourhood is fully lit or fully shadowed
     // (unless something smaller than the kernel hides between them) and the rest is skipped.
-    sum = kernelTap(c, 0) + kernelTap(c, last) + kernelTap(c, last * n) +
-          kernelTap(c, last * n + last);
-    if (sum == 0.0 || sum == 4.0) {
-      gStopped = true;
-      return sum * 0.25;
+    sum = kernelTap(c, kUnitTaps[0]) + kernelTap(c, kUnitTaps[last]) +
+          kernelTap(c, kUnitTaps[last * n]) + kernelTap(c, kUnitTaps[last * n + last]);
+    gStopped = sum == 0.0 || sum == 4.0;
+    // The rest one tap per turn of a loop that the probes start, not under an if: llvmpipe
+    // runs both sides of an if for every pixel of its SIMD vector, but leaves a loop once no
+    // pixel in it is still looping, so where all agreed the rest costs one empty turn.
+    for (int k = gStopped ? n * n : 0; k < n * n - 4; ++k) {
+      int at = k + 1;  // the k-th tap that is not a corner, row by row
+      if (at >= last) ++at;
+      if (at >= last * n) ++at;
+      sum += kernelTap(c, kUnitTaps[at]);
     }
+    return gStopped ? sum * 0.25 : sum / float(n * n);
   }
+#endif
   for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      if (probed && (i == 0 || i == last) && (j == 0 || j == last)) continue;  // done above
-      sum += kernelTap(c, j * n + i);
-    }
+    for (int i = 0; i < n; ++i) sum += kernelTap(c, kUnitTaps[j * n + i]);
   }
   return sum / float(n * n);
 }
@@ -74,10 +79,15 @@ float pcfGrid(vec3 c) {
 // patterns of a 2 x 2 pixel block together are the 4 x 4 grid of the same radius.
 #if PCF_MODE == PCF_MODE_DITHERED
 float pcfDithered(vec3 c) {
-  ivec2 parity = ivec2(mod(floor(gl_FragCoord.xy), 2.0));
-  int first = 4 * (parity.x + 2 * parity.y);
+  bvec2 odd = equal(ivec2(mod(floor(gl_FragCoord.xy), 2.0)), ivec2(1));
   float sum = 0.0;
-  for (int k = 0; k < 4; ++k) sum += kernelTap(c, first + k);
+  for (int k = 0; k < 4; ++k) {
+    // Pattern x + 2y picked by selects between constants: indexing the constants by the
+    // pixel's parity cost llvmpipe more than the four taps' selects (callgrind, README).
+    vec2 even_row = odd.x ? kUnitTaps[4 + k] : kUnitTaps[k];
+    vec2 odd_row = odd.x ? kUnitTaps[12 + k] : kUnitTaps[8 + k];
+    sum += kernelTap(c, odd.y ? odd_row : even_row);
+  }
   return sum * 0.25;
 }
 #endif
@@ -87,16 +97,16 @@ float pcfDithered(vec3 c) {
 #if PCF_MODE == PCF_MODE_POISSON
 float pcfPoisson(vec3 c) {
   const int n = PCF_TAP_COUNT;
-  const bool probed = PCF_EARLY_OUT == 1 && n > 4;
   float sum = 0.0;
-  if (probed) {
-    for (int k = 0; k < 4; ++k) sum += kernelTap(c, k);
-    if (sum == 0.0 || sum == 4.0) {
-      gStopped = true;
-      return sum * 0.25;
-    }
+#if PCF_EARLY_OUT == 1
+  if (n > 4) {
+    for (int k = 0; k < 4; ++k) sum += kernelTap(c, kUnitTaps[k]);
+    gStopped = sum == 0.0 || sum == 4.0;
+    for (int k = gStopped ? n : 4; k < n; ++k) sum += kernelTap(c, kUnitTaps[k]);  // as the grid
+    return gStopped ? sum * 0.25 : sum / float(n);
   }
-  for (int k = probed ? 4 : 0; k < n; ++k) sum += kernelTap(c, k);
+#endif
+  for (int k = 0; k < n; ++k) sum += kernelTap(c, kUnitTaps[k]);
   return sum / float(n);
 }
 #endif

@@ -71,17 +71,21 @@ Sweep precisionFarStudy() {
   return precisionStudy(far);
 }
 
-// What PCF's taps cost (issue 10): lesson 05's eye pass against the same pass with no shadow
-// work, for one tap, a 3x3 grid with every tap taken, and the grid with its early out; the map
-// rendered every frame, the counting off, on the preset of cubes and the default one.
+// What PCF's taps cost (issues 10, 20): lesson 05's eye pass against the same pass with no
+// shadow work, for one tap, a 3x3 grid with every tap taken, the grid with its early out, the
+// default 4 dithered taps and a 16-tap Poisson disk (early out); the map rendered every frame,
+// the counting off, on the preset of cubes and the default one.
 Sweep pcfCostStudy() {
-  const std::string grid = "lesson=05_pcf_dithered pcf.mode=grid pcf.taps=9 pcf.radius=1.5";
+  const std::string lesson = "lesson=05_pcf_dithered pcf.radius=1.5 ";
+  const std::string grid = lesson + "pcf.mode=grid pcf.taps=9";
   return {.scenes = {"cubes", "torus_pyramid"},
           .axes = {{"shadow.off", {"false", "true"}},
                    {"kernel",
                     {"none:lesson=05_pcf_dithered pcf.mode=none",
                      "grid3x3:" + grid + " pcf.early_out=false",
-                     "grid3x3_early_out:" + grid + " pcf.early_out=true"}}},
+                     "grid3x3_early_out:" + grid + " pcf.early_out=true",
+                     "dithered:" + lesson + "pcf.mode=dithered",
+                     "poisson16:" + lesson + "pcf.mode=poisson pcf.taps=16"}}},
           .fixed = {"inset=false", "shadow.cache=false", "pcf.count=false"},
           .plot_metrics = {"vis_mae"},
           .study = true};
