@@ -24,7 +24,9 @@ class ShadowMapBasic final : public Lesson {
   }
   std::vector<std::string> debugViews() const override {
     // Kilgard's visualizations (seed 000, "Visualizing the Shadow Mapping Technique").
-    return {"light_view", "light_depth", "projected_depth", "light_distance", "compare"};
+    return {
+        "light_view", "light_depth", "projected_depth", "light_distance",
+        "compare",    "aliasing"};  // aliasing: the runner's texels per pixel (texel_density.hpp)
   }
 
   void declare(Params& p) override {

@@ -42,7 +42,9 @@ class BiasOffset final : public Lesson {
     return "seed 000: glPolygonOffset .. Selecting the Depth Map Bias; 001: Combating Shadow "
            "Acne; 002: Depth Biasing; 003: slides 57-70";
   }
-  std::vector<std::string> debugViews() const override { return {"bias_margin", "light_depth"}; }
+  std::vector<std::string> debugViews() const override {
+    return {"bias_margin", "light_depth", "aliasing"};
+  }
 
   void declare(Params& p) override {
     map_.declare(p);

@@ -33,7 +33,9 @@ class PcfDithered final : public Lesson {
     return "seed 000: Hardware Shadow Map Filtering .. Advice for Shadowed Illumination Model "
            "(2); 001: Soft Shadows .. PCF with Dithering; 003: slide 71";
   }
-  std::vector<std::string> debugViews() const override { return {"taps", "light_depth"}; }
+  std::vector<std::string> debugViews() const override {
+    return {"taps", "light_depth", "aliasing"};
+  }
 
   void declare(Params& p) override {
     map_.declare(p);

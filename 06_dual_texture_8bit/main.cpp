@@ -25,7 +25,9 @@ class DualTexture8bit final : public Lesson {
     return "seed 000: An Alternative to Dedicated Shadow Mapping Hardware .. Improving Depth "
            "Map Precision";
   }
-  std::vector<std::string> debugViews() const override { return {"map", "ramp", "difference"}; }
+  std::vector<std::string> debugViews() const override {
+    return {"map", "ramp", "difference", "aliasing"};
+  }
 
   void declare(Params& p) override {
     map_.declare(p, /*linearChoice=*/true);

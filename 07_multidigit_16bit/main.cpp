@@ -25,7 +25,7 @@ class MultiDigit16bit final : public Lesson {
     return "seed 000: Improving Depth Map Precision .. GeForce/Quadro Precision Extension";
   }
   std::vector<std::string> debugViews() const override {
-    return {"big_digit", "little_digit", "passes"};
+    return {"big_digit", "little_digit", "passes", "aliasing"};
   }
 
   void declare(Params& p) override {

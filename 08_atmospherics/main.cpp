@@ -26,7 +26,7 @@ class Atmospherics final : public Lesson {
            "Shadows with Atmospherics";
   }
   std::vector<std::string> debugViews() const override {
-    return {"air", "surfaces", "spot", "light_depth"};
+    return {"air", "surfaces", "spot", "light_depth", "aliasing"};
   }
   std::vector<std::string> scenes() const override {
     std::vector<std::string> all = {"room"};

@@ -227,6 +227,10 @@ void Runner::initGl() {
   gpu_->gbuffer = Program(dir / "gbuffer.vert", dir / "gbuffer.frag");
   gpu_->image = Program(dir / "fullscreen.vert", dir / "image.frag");
   gpu_->depth_inset = Program(dir / "fullscreen.vert", dir / "depth_inset.frag");
+  gpu_->texel_heatmap =
+      Program(dir / "shadow_coord.vert", dir / "texel_density.frag", {"TEXEL_HEATMAP 1"});
+  gpu_->texel_raw =
+      Program(dir / "shadow_coord.vert", dir / "texel_density.frag", {"TEXEL_HEATMAP 0"});
   glGenVertexArrays(1, &gpu_->empty_vao);
   for (const auto& object : scene_.objects) gpu_->meshes.emplace_back(object.mesh);
   gpu_->ensureTargets(options_.width, options_.height);
@@ -268,6 +272,7 @@ void Runner::renderBaselineFrame() {
     std::optional<glm::mat4> frustum;
     float area_radius;
     std::optional<AirMedium> medium;
+    std::optional<ShadowSampling> sampling;
     ~Restore() {
       off.value[0] = 0.0;
       std::swap(r.measure_, r.baseline_measure_);
@@ -276,8 +281,10 @@ void Runner::renderBaselineFrame() {
       r.light_frustum_ = frustum;
       r.truth_area_radius_ = area_radius;
       r.medium_ = medium;
+      r.shadow_sampling_ = sampling;
     }
-  } restore{*this, *off, params_.dirty(), light_frustum_, truth_area_radius_, medium_};
+  } restore{*this,           *off, params_.dirty(), light_frustum_, truth_area_radius_, medium_,
+            shadow_sampling_};
   std::swap(measure_, baseline_measure_);
   in_baseline_ = true;
   off->value[0] = 1.0;  // not through Params::set: nothing is dirtied
@@ -348,12 +355,22 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
       frame.clearTarget(Frame::kNoTruthColor);  // a plain picture; the panel says why
     showImage(frame, frame.mode == "truth" ? truth_image_ : error_image_);
   } else {
+    // The texel views are the runner's, drawn over the lesson's shaded frame, whose map
+    // they measure: `aliasing` (offered by map lessons) and `texels` (measureTexels()).
+    const bool texels = frame.mode == "aliasing" || frame.mode == "texels";
+    const std::string texel_mode = frame.mode;
+    if (texels) frame.mode = "shaded";
     ProgramVariants::takeUsed();  // only this frame's
     lesson_->render(frame);
     measure_->variants(ProgramVariants::takeUsed());
     light_frustum_ = frame.light_view_projection;
     truth_area_radius_ = frame.truth_area_radius;
     medium_ = frame.medium;
+    shadow_sampling_ = frame.shadow_sampling;
+    if (texels) {
+      frame.mode = texel_mode;
+      drawTexels(frame, texel_mode == "aliasing");
+    }
   }
   if (withPanel && !window_) {
     frame.bindTarget();

@@ -16,6 +16,7 @@
 #include "program.hpp"
 #include "scene.hpp"
 #include "shadow_math.hpp"
+#include "texel_density.hpp"
 #include "truth.hpp"
 #include "truth_job.hpp"
 
@@ -68,6 +69,9 @@ struct Frame {
   // A window while its camera or a slider moves (until input rests, as the truth waits): a
   // lesson may draw a cheaper picture and say so. Never in a headless run.
   bool input_moving = false;
+  // A map lesson's map as the eye's pixels sample it (LightView::update sets it): the runner's
+  // `aliasing` view and the report's texels per pixel come from it.
+  std::optional<ShadowSampling> shadow_sampling;
 
   // The view as shader #defines: VIEW_SHADED 0, VIEW_VISIBILITY 1, ... for every view the
   // lesson has, and VIEW as the one to render (`#if VIEW == VIEW_VISIBILITY`).
@@ -98,6 +102,21 @@ struct Frame {
   void drawFullscreen(const Program& program, bool inset = false) const;
 };
 
+// Per pixel, what the last error measure compared: a lesson breaks its metrics down by the
+// regions it knows (lesson 10: the plane of interest, region II).
+struct ErrorPixels {
+  std::vector<float> rendered, truth, weight;  // compareVisibility's inputs
+  std::vector<glm::vec4> position;             // world xyz, w the object (-1: not counted)
+};
+
+// What Lesson::reportPixels gets: the texel pass (null without a map) and the error's pixels
+// (null before the truth was measured), row by row from the bottom, width x height.
+struct PixelMeasures {
+  int width = 0, height = 0;
+  const std::vector<TexelPixel>* texels = nullptr;
+  const ErrorPixels* error = nullptr;
+};
+
 class Lesson {
  public:
   virtual ~Lesson() = default;
@@ -110,6 +129,8 @@ class Lesson {
   virtual void render(Frame& frame) = 0;     // draw frame.mode into frame.target
   virtual void panel(Frame&) {}              // extra ImGui lines under the sliders
   virtual void report(JsonWriter&) const {}  // extra report fields (what the lesson derived)
+  // Report fields measured per pixel (the runner's texel pass, the error's pixels).
+  virtual void reportPixels(JsonWriter&, const PixelMeasures&) const {}
   // Shared parameters (light.fov, light.near, ...) this lesson has no use for: the runner
   // does not offer them.
   virtual std::vector<std::string> unusedSharedParams() const { return {}; }
@@ -163,6 +184,7 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& options);
 struct ErrorState {
   ErrorMetrics metrics;
   bool valid = false;
+  std::shared_ptr<const ErrorPixels> pixels;
 };
 
 class Runner {
@@ -211,6 +233,10 @@ class Runner {
   std::vector<float> renderVisibility();
   // Renders `mode` into the float target and returns its red channel (visibility, air).
   std::vector<float> renderRed(const std::string& mode);
+  // Texels per pixel (texel_density.hpp) for the current parameters, read back from the
+  // runner's texel pass over the lesson's map; null when the last frame had no map.
+  // Cached until a parameter or the size changes.
+  const std::vector<TexelPixel>* measureTexels();
 
   Params& params() { return params_; }
   Measure& measure() { return *measure_; }
@@ -303,6 +329,12 @@ class Runner {
   std::optional<glm::mat4> light_frustum_;
   float truth_area_radius_ = 0.0f;
   std::optional<AirMedium> medium_;
+  std::optional<ShadowSampling> shadow_sampling_;
+  std::vector<TexelPixel> texel_pixels_;  // measureTexels(), for texel_key_
+  std::optional<TexelStats> texel_stats_;
+  std::string texel_key_;
+  // The runner's texel pass over the frame the lesson just drew (`aliasing` view or raw).
+  void drawTexels(const Frame& frame, bool heatmap);
   Truth::AirResult air_truth_;
   struct TruthInputs;
   struct TruthResult {  // what a traced truth installs
@@ -312,6 +344,7 @@ class Runner {
     Truth::AirResult air;
     std::shared_ptr<const TruthTracer> truth;
     std::vector<std::uint8_t> job_bytes, trace_bytes;  // when the outputs ask for them
+    std::shared_ptr<const ErrorPixels> pixels;
   };
   int runHeadlessOrWindow();
   TruthInputs gatherTruthInputs();                    // render thread

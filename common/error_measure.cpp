@@ -45,6 +45,49 @@ std::vector<float> Runner::renderRed(const std::string& mode) {
   return red;
 }
 
+void Runner::drawTexels(const Frame& frame, bool heatmap) {
+  if (!frame.shadow_sampling) return;  // no map this frame (shadow.off): the lesson's picture
+  const ShadowSampling& map = *frame.shadow_sampling;
+  resetGlState();
+  if (heatmap) {
+    frame.clearTarget();
+  } else {
+    frame.bindTarget();
+    glClearColor(0, 0, 0, 0);  // z = 0: not counted
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  }
+  const Program& p = heatmap ? gpu_->texel_heatmap : gpu_->texel_raw;
+  p.use();
+  p.set("uViewProjection", frame.projection * frame.view);
+  p.set("uShadowMatrix", map.texture_matrix);
+  p.set("uMapSize", glm::vec2(map.map_size));
+  p.set("uTolerance", kTexelTolerance);
+  frame.setLightingUniforms(p, 0.0f);
+  drawObjects(frame, p, Objects::All, nullptr);
+  resetGlState();
+}
+
+const std::vector<TexelPixel>* Runner::measureTexels() {
+  std::string key = errorKey();
+  if (key != texel_key_) {
+    const int w = options_.width, h = options_.height;
+    gpu_->ensureTargets(w, h);
+    const GLuint fbo = gpu_->float_target->id();
+    renderInto(fbo, w, h, "texels", false, false);
+    texel_pixels_.clear();
+    texel_stats_.reset();
+    if (shadow_sampling_) {
+      texel_pixels_.resize(static_cast<size_t>(w) * h);
+      glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+      glReadBuffer(GL_COLOR_ATTACHMENT0);
+      glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, texel_pixels_.data());
+      texel_stats_ = texelStats(texel_pixels_);
+    }
+    texel_key_ = std::move(key);
+  }
+  return texel_stats_ ? &texel_pixels_ : nullptr;
+}
+
 std::string Runner::errorKey() const {
   // Everything that can change the picture: every parameter but the view, and the size.
   std::string key = std::to_string(options_.width) + "x" + std::to_string(options_.height);
@@ -85,6 +128,7 @@ Runner::TruthInputs Runner::gatherTruthInputs() {
   const bool was_enabled = measure_->enabled();
   measure_->setEnabled(false);
 
+  measureTexels();  // what the panel shows next to the error, measured when it is
   // The lesson's shadow term, and its shaded picture in float to catch NaN and Inf.
   in.rendered = renderVisibility();
   const GLuint fbo = gpu_->float_target->id();
@@ -216,6 +260,8 @@ Runner::TruthResult Runner::traceTruth(TruthInputs in) {
   }
   m.nonfinite_pixels = nonfinite;
   out.error_image = {w, h, errorImage(shaded_bytes, in.rendered, truth)};
+  out.pixels = std::make_shared<const ErrorPixels>(
+      ErrorPixels{in.rendered, truth, weight, job.surface.position});
   out.truth_image = {w, h, std::vector<std::uint8_t>(n * 4)};
   for (size_t i = 0; i < n; ++i) {
     // Truth lit white, shadowed black, not counted (no surface, facing away) dark blue.
@@ -251,6 +297,7 @@ void Runner::installTruth(TruthResult result) {
   trace_bytes_ = std::move(result.trace_bytes);
   error_.metrics = std::move(result.metrics);
   error_.valid = true;
+  error_.pixels = std::move(result.pixels);
   error_key_ = std::move(result.key);
   error_image_ = std::move(result.error_image);
   truth_image_ = std::move(result.truth_image);

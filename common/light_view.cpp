@@ -49,9 +49,19 @@ bool LightView::update(Frame& f, glm::ivec2 size, bool recreated, std::uint32_t 
   }
   projection_ = lightProjection(frustum_);
   view_ = f.light.view;
+  warped_.reset();
   f.light_view_projection = viewProjection();
+  if (!off_) f.shadow_sampling = ShadowSampling{textureMatrix(), size_};
   f.measure.count("shadow_map_renders", stale ? 1 : 0);
   return stale;
+}
+
+bool LightView::warp(Frame& f, const glm::mat4& viewProjection) {
+  warped_ = viewProjection;
+  if (!off_) f.shadow_sampling = ShadowSampling{textureMatrix(), size_};
+  const bool changed = last_warp_ != warped_;
+  last_warp_ = warped_;
+  return changed;
 }
 
 glm::vec2 LightView::texelFootprint() const {

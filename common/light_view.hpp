@@ -5,6 +5,8 @@
 // 8-bit digits) is up to the lesson or to ShadowMap.
 #pragma once
 
+#include <optional>
+
 #include "app.hpp"
 
 namespace shadows {
@@ -24,12 +26,20 @@ class LightView {
   bool update(Frame& frame, glm::ivec2 size, bool recreated,
               std::uint32_t extraDirty = kDirtyNothing);
 
+  // Lesson 10: this frame's map through another world-to-clip matrix than the frustum's (a
+  // focused or warped projection), set after update(). The frustum the truth counts in stays
+  // the light's own. True when it differs from the matrix of the previous frame, so a map built
+  // through it must be rendered again.
+  bool warp(Frame& frame, const glm::mat4& viewProjection);
+
   const LightFrustum& frustum() const { return frustum_; }
   const glm::mat4& projection() const { return projection_; }
   const glm::mat4& view() const { return view_; }
-  glm::mat4 viewProjection() const { return projection_ * view_; }
-  // B * P_light * V_light: world space to (s, t, r, q).
-  glm::mat4 textureMatrix() const { return shadowTextureMatrix(projection_, view_); }
+  glm::mat4 viewProjection() const { return warped_ ? *warped_ : projection_ * view_; }
+  // B * P_light * V_light (or B * the warp): world space to (s, t, r, q).
+  glm::mat4 textureMatrix() const {
+    return warped_ ? biasMatrix() * *warped_ : shadowTextureMatrix(projection_, view_);
+  }
   glm::ivec2 size() const { return size_; }
   // shadow.off: the lesson draws its frame without any shadow work (update() renders no map).
   bool off() const { return off_; }
@@ -52,6 +62,7 @@ class LightView {
  private:
   LightFrustum frustum_;
   glm::mat4 projection_{1.0f}, view_{1.0f};
+  std::optional<glm::mat4> warped_, last_warp_;
   glm::ivec2 size_{0};
   glm::vec2 caster_distances_{0.0f};
   bool track_caster_distances_ = false;

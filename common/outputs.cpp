@@ -84,6 +84,21 @@ void Runner::writeReport(JsonWriter& json) {
   json.endArray();
   json.value("shader_variants_compiled", ProgramVariants::compiledTotal() - compiled_at_start_);
   lesson_->report(json);
+  // Where the map's texels land (texel_density.hpp), for lessons with a map this frame.
+  if (measureTexels() != nullptr) {
+    const TexelStats& t = *texel_stats_;
+    json.beginObject("texels_per_pixel");
+    json.value("pixels", t.pixels);
+    for (const auto& [name, axis] : {std::pair{"min_axis", t.min_axis}, {"max_axis", t.max_axis}}) {
+      json.beginObject(name);
+      json.value("median", static_cast<double>(axis.median));
+      json.value("p5", static_cast<double>(axis.p5));
+      json.value("p95", static_cast<double>(axis.p95));
+      json.endObject();
+    }
+    json.endObject();
+    json.value("undersampled_pct", t.undersampled_pct);
+  }
   if (error_.valid) {
     const ErrorMetrics& e = error_.metrics;
     json.beginObject("error");
@@ -106,6 +121,10 @@ void Runner::writeReport(JsonWriter& json) {
     }
     json.endObject();
   }
+  // After the error block, so that a first match of a metric's name is the whole frame's.
+  lesson_->reportPixels(json,
+                        {options_.width, options_.height, measureTexels(),
+                         error_.valid && error_key_ == errorKey() ? error_.pixels.get() : nullptr});
   json.endObject();
 }
 

@@ -156,6 +156,11 @@ void Runner::drawPanel(Frame& frame) {
       ImGui::TextDisabled("error: measuring...");
     }
   }
+  if (texel_stats_) {
+    ImGui::TextWrapped("texels per pixel: median %.2f (least axis), %.1f%% under-sampled%s",
+                       texel_stats_->min_axis.median, texel_stats_->undersampled_pct,
+                       texel_key_ == errorKey() ? "" : " (stale)");
+  }
   if (const double overhead = shadowOverhead(); overhead > 0.0) {
     ImGui::Text("cost: %.2fx the frame without shadow", overhead);
   }

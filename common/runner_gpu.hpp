@@ -41,7 +41,8 @@ struct Runner::Gpu {
   std::unique_ptr<Framebuffer> float_target;
   int size_w = 0, size_h = 0;
   Program gbuffer, image, depth_inset;
-  Texture shown;  // the error or truth image, uploaded for display
+  Program texel_heatmap, texel_raw;  // texel_density.frag, the aliasing view and its numbers
+  Texture shown;                     // the error or truth image, uploaded for display
   // The window's panel: drawn into its own texture only when it may have changed, laid over
   // every frame (Runner::panelDue, drawPanelTexture, laySavedPanel).
   Texture panel_color;

@@ -41,6 +41,10 @@ class ShadowMap {
   // The depth map inset in a corner (or over the whole target), when `inset` is on.
   void drawInset(const Frame& frame, bool fullscreen = false) const;
 
+  // Lesson 10: the map through a focused or warped projection (LightView::warp).
+  bool warp(Frame& frame, const glm::mat4& viewProjection) {
+    return light_.warp(frame, viewProjection);
+  }
   const Texture& texture() const { return texture_; }
   bool off() const { return light_.off(); }
   bool fitted() const { return light_.fitted(); }
