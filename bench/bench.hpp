@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,7 @@ struct Result {
   std::map<std::string, long long> counts;
   ErrorMetrics error;
   bool error_valid = false;
+  std::optional<double> undersampled_pct;  // lessons with a map (texel_density.hpp)
   int gl_errors = 0;
   std::string renderer;
 };

@@ -239,7 +239,8 @@ const std::map<std::string, std::string>& metricTitles() {
       {"false_lit_pct", "false lit (leaks, jagged edges): % of pixels"},
       {"shade_mae", "shade_mae: mean |vis - truth| x N.L"},
       {"air_rel_rmse_pct", "air light: relative RMSE, %"},
-      {"air_mae", "air light: mean |rendered - truth|"}};
+      {"air_mae", "air light: mean |rendered - truth|"},
+      {"undersampled_pct", "under-sampled: % of pixels, < 1 texel along an axis"}};
   return titles;
 }
 

@@ -49,6 +49,9 @@ void Bench::run(benchmark::State& state, size_t index) {
       const ErrorState& e = r.measureError();
       result.error = e.metrics;
       result.error_valid = e.valid;
+      if (const auto* texels = r.measureTexels()) {
+        result.undersampled_pct = texelStats(*texels).undersampled_pct;
+      }
     }
     result.gl_errors += r.glErrors() - errors_before;
     result.renderer = renderer_;

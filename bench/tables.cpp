@@ -82,7 +82,7 @@ Table makeTable(const std::vector<const Config*>& configs,
   for (const auto& name : counts) column(name, true);
   for (const char* name :
        {"false_shadow_pct", "false_lit_pct", "vis_mae", "shade_mae", "nonfinite_pixels",
-        "counted_pixels", "air_mae", "air_rel_rmse", "air_truth_noise"}) {
+        "counted_pixels", "air_mae", "air_rel_rmse", "air_truth_noise", "undersampled_pct"}) {
     column(name, true);
   }
   column("truth", false);
@@ -130,6 +130,7 @@ Table makeTable(const std::vector<const Config*>& configs,
     row.push_back(air ? number(r.error.air.mae) : "");
     row.push_back(air ? number(r.error.air.rel_rmse) : "");
     row.push_back(air ? number(r.error.air.truth_noise) : "");
+    row.push_back(r.undersampled_pct ? number(*r.undersampled_pct) : "");
     row.push_back(e ? r.error.truth : "");
     row.push_back(std::to_string(r.gl_errors));
     row.push_back(r.renderer);

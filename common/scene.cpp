@@ -218,6 +218,92 @@ Scene room() {
   return s;
 }
 
+// Lesson 10's planes of interest beside the floor (seed 002, "Playing with Projection
+// Matrices": "ground plane, wall, table top"): receivers that cast nothing, so a map never
+// holds them and only the projection decides how well they are shadowed.
+void addWallAndTable(Scene& s, const glm::mat4& wall, glm::vec3 tableAt, float tilt) {
+  const glm::mat4 one(1.0f);
+  s.objects.push_back({"wall", makePlane(8.0f, 3.0f), wall, {0.72f, 0.7f, 0.66f}, false, true});
+  const glm::mat4 table = translate(tableAt) * glm::rotate(one, glm::radians(tilt), {1, 0, 0});
+  s.objects.push_back({"table", makePlane(1.4f, 0.9f), table, {0.62f, 0.5f, 0.38f}, false, true});
+  // The board under the top casts its shadow (the plane alone casts nothing); a little wider,
+  // so that its shadow covers the top's, which the ray-traced truth also sees.
+  s.objects.push_back({"board",
+                       makeBox({1.46f, 0.04f, 0.96f}),
+                       table * translate({0.0f, -0.05f, 0.0f}),
+                       {0.5f, 0.4f, 0.3f}});
+  // Its legs cast; something stands on it (a caster above the plane: region I).
+  for (const glm::vec2 leg : {glm::vec2(-1.2f, -0.7f), glm::vec2(1.2f, -0.7f),
+                              glm::vec2(-1.2f, 0.7f), glm::vec2(1.2f, 0.7f)}) {
+    const glm::vec3 top = glm::vec3(table * glm::vec4(leg.x, 0.0f, leg.y, 1.0f));
+    const float h = 0.5f * top.y;
+    s.objects.push_back(
+        {"leg", makeBox({0.06f, h, 0.06f}), translate({top.x, h, top.z}), {0.4f, 0.3f, 0.22f}});
+  }
+  s.objects.push_back({"cup",
+                       makeBox({0.25f, 0.3f, 0.25f}),
+                       table * translate({0.3f, 0.3f, 0.0f}),
+                       {0.85f, 0.45f, 0.25f}});
+}
+
+// Lesson 10: an RTS-style camera high above the ground looking down at units and buildings
+// (seed 002: "most useful for games where the view is top-down or isometric").
+Scene strategy() {
+  Scene s;
+  const glm::mat4 one(1.0f);
+  // The floor ends at the wall: the wall, a receiver, casts nothing onto a floor behind it.
+  s.objects.push_back(
+      {"floor", makePlane(12.0f, 10.0f), translate({0, 0, 3}), {0.75f, 0.75f, 0.72f}, false, true});
+  addWallAndTable(s, translate({0, 3, -7}) * glm::rotate(one, glm::radians(90.0f), {1, 0, 0}),
+                  {3.0f, 0.9f, 1.5f}, 18.0f);
+  for (int i = 0; i < 6; ++i) {
+    const float x = -5.0f + 1.6f * static_cast<float>(i), z = (i % 2 == 0) ? -2.0f : 0.5f;
+    const float h = 0.4f + 0.25f * static_cast<float>(i % 3);
+    s.objects.push_back({"unit_" + std::to_string(i),
+                         makeBox({0.35f, h, 0.35f}),
+                         translate({x, h, z}),
+                         {0.3f + 0.1f * static_cast<float>(i % 3), 0.55f, 0.85f}});
+  }
+  s.objects.push_back({"building",
+                       makeBox({1.2f, 1.5f, 1.0f}),
+                       translate({-3.5f, 1.5f, -4.5f}),
+                       {0.7f, 0.62f, 0.5f}});
+  s.objects.push_back(
+      {"sphere", makeSphere(0.6f, 48, 24), translate({0.5f, 0.6f, 3.5f}), {0.5f, 0.8f, 0.4f}});
+  s.light = {false, {6.0f, 11.0f, 6.0f}, {-1.0f, 0.0f, -1.5f}, 105.0f, 10.0f, 3.0f, 35.0f};
+  s.camera = {{0.0f, 13.0f, 7.0f}, {0.0f, 0.0f, -0.5f}, 45.0f, 0.1f, 100.0f};
+  return s;
+}
+
+// Lesson 10: a long floor that recedes from a low eye, posts along it (perspective aliasing:
+// a uniform map spends as many texels far away as near).
+Scene receding() {
+  Scene s;
+  const glm::mat4 one(1.0f);
+  s.objects.push_back({"floor",
+                       makePlane(8.25f, 40.0f),
+                       translate({3.75f, 0, -30}),
+                       {0.75f, 0.75f, 0.72f},
+                       false,
+                       true});  // it ends at the wall, x = -4.5
+  addWallAndTable(s,
+                  translate({-4.5f, 3, -6}) * glm::rotate(one, glm::radians(-90.0f), {0, 0, 1}) *
+                      glm::rotate(one, glm::radians(90.0f), {0, 1, 0}),
+                  {1.8f, 0.8f, 3.0f}, -15.0f);
+  for (int i = 0; i < 12; ++i) {
+    const float z = 4.0f - 3.5f * static_cast<float>(i);
+    s.objects.push_back({"post_" + std::to_string(i),
+                         makeBox({0.15f, 1.2f, 0.15f}),
+                         translate({(i % 2 == 0) ? -1.5f : 1.5f, 1.2f, z}),
+                         {0.3f, 0.55f, 0.85f}});
+  }
+  s.objects.push_back(
+      {"sphere", makeSphere(0.5f, 48, 24), translate({0.0f, 0.5f, -2.0f}), {0.5f, 0.8f, 0.4f}});
+  s.light = {true, {12.0f, 20.0f, -8.0f}, {0.0f, 0.0f, -14.0f}, 60.0f, 30.0f, 1.0f, 60.0f};
+  s.camera = {{0.0f, 1.7f, 7.0f}, {0.0f, 0.6f, -10.0f}, 50.0f, 0.1f, 100.0f};
+  return s;
+}
+
 }  // namespace
 
 Scene makeScene(const std::string& preset) {
@@ -276,6 +362,10 @@ Scene makeScene(const std::string& preset) {
     s.camera = {{0.0f, 1.5f, 9.5f}, {0.0f, 0.0f, -4.0f}, 45.0f, 0.1f, 100.0f};
   } else if (preset == "room") {
     s = room();
+  } else if (preset == "strategy") {
+    s = strategy();
+  } else if (preset == "receding") {
+    s = receding();
   } else {
     throw std::invalid_argument("unknown scene '" + preset + "'");
   }

@@ -44,7 +44,8 @@ struct Sweep {
   std::vector<Axis> axes;
   std::vector<std::string> fixed;  // --set values every configuration shares
   // The error metrics plotted against time, one row of panels each: any of vis_mae,
-  // false_shadow_pct, false_lit_pct, shade_mae, air_rel_rmse_pct, air_mae.
+  // false_shadow_pct, false_lit_pct, shade_mae, air_rel_rmse_pct, air_mae, undersampled_pct
+  // (lessons with a map: texel_density.hpp).
   std::vector<std::string> plot_metrics = {"vis_mae"};
   // Also plot against axes[0]'s (numeric) value (<name>_along.png), for knobs that cost nothing
   // (a bias): there the question is how error moves with the knob.
