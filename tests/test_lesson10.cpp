@@ -21,6 +21,14 @@ std::vector<std::string> frameSized(const std::string& scene, const std::string&
           "inset=false"};
 }
 
+TEST(Lesson10, SnapshotMatchesTheGolden) {
+  // Rendered by this lesson on Mesa llvmpipe and looked at (tests/golden/README.md).
+  auto runner = startLesson(kLesson, {});
+  runner->renderFrame();
+  testing::expectMatchesGolden(runner->readImage(), kLesson);
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
 TEST(Lesson10, PlaneOptimalGivesOneTexelPerPixelOnThePlaneOnEveryPreset) {
   for (const std::string scene : {"dueling", "strategy", "receding"}) {
     auto runner = startLesson(kLesson, frameSized(scene, "plane_optimal"), kWidth, kHeight);
