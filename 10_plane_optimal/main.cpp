@@ -123,22 +123,10 @@ class PlaneOptimal final : public Lesson {
     json.value("name", plane_.name());
     json.value("in_scene", plane_index_ >= 0);
     if (m.texels != nullptr && plane_index_ >= 0) {
-      const TexelStats t = texelStats(*m.texels, plane_index_);
-      json.value("pixels", t.pixels);
-      json.beginObject("texels_per_pixel");
-      for (const auto& [name, axis] :
-           {std::pair{"min_axis", t.min_axis}, {"max_axis", t.max_axis}}) {
-        json.beginObject(name);
-        json.value("median", static_cast<double>(axis.median));
-        json.value("p5", static_cast<double>(axis.p5));
-        json.value("p95", static_cast<double>(axis.p95));
-        json.endObject();
-      }
-      json.endObject();
+      writeTexelsPerPixel(json, texelStats(*m.texels, plane_index_));
     }
     if (m.error != nullptr) {
-      const RegionError plane = regionError(*m.error, [&](size_t i, glm::vec4 p) {
-        (void)i;
+      const RegionError plane = regionError(*m.error, [&](glm::vec4 p) {
         return plane_index_ >= 0 && static_cast<int>(p.w) == plane_index_;
       });
       writeRegionError(json, plane);
@@ -146,7 +134,7 @@ class PlaneOptimal final : public Lesson {
     json.endObject();
     if (m.error != nullptr) {
       json.beginObject("region_two");
-      const RegionError two = regionError(*m.error, [&](size_t, glm::vec4 p) {
+      const RegionError two = regionError(*m.error, [&](glm::vec4 p) {
         return !inRegionOne(glm::vec3(p), light_, plane_space_, camera_, plane_inverse_,
                             plane_half_) ||
                plane_index_ < 0;
@@ -171,7 +159,7 @@ class PlaneOptimal final : public Lesson {
     RegionError r;
     for (size_t i = 0; i < e.truth.size(); ++i) {
       const glm::vec4 p = e.position[i];
-      if (!(e.truth[i] >= 0.0f) || !(e.weight[i] > 0.0f) || p.w < 0.0f || !inside(i, p)) continue;
+      if (!(e.truth[i] >= 0.0f) || !(e.weight[i] > 0.0f) || p.w < 0.0f || !inside(p)) continue;
       ++r.pixels;
       const bool truth_lit = e.truth[i] >= 0.5f, lit = e.rendered[i] >= 0.5f;
       if (truth_lit && !lit) ++r.false_shadow;

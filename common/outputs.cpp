@@ -87,16 +87,7 @@ void Runner::writeReport(JsonWriter& json) {
   // Where the map's texels land (texel_density.hpp), for lessons with a map this frame.
   if (measureTexels() != nullptr) {
     const TexelStats& t = *texel_stats_;
-    json.beginObject("texels_per_pixel");
-    json.value("pixels", t.pixels);
-    for (const auto& [name, axis] : {std::pair{"min_axis", t.min_axis}, {"max_axis", t.max_axis}}) {
-      json.beginObject(name);
-      json.value("median", static_cast<double>(axis.median));
-      json.value("p5", static_cast<double>(axis.p5));
-      json.value("p95", static_cast<double>(axis.p95));
-      json.endObject();
-    }
-    json.endObject();
+    writeTexelsPerPixel(json, t);
     json.value("undersampled_pct", t.undersampled_pct);
   }
   if (error_.valid) {

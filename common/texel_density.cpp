@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "json.hpp"
+
 namespace shadows {
 
 glm::vec2 singularValues(glm::vec2 ddx, glm::vec2 ddy) {
@@ -44,6 +46,19 @@ TexelStats texelStats(const std::vector<TexelPixel>& pixels, std::optional<int> 
   s.max_axis = {percentile(most, 5), percentile(most, 50), percentile(most, 95)};
   s.undersampled_pct = 100.0 * static_cast<double>(under) / static_cast<double>(s.pixels);
   return s;
+}
+
+void writeTexelsPerPixel(JsonWriter& json, const TexelStats& t) {
+  json.beginObject("texels_per_pixel");
+  json.value("pixels", t.pixels);
+  for (const auto& [name, axis] : {std::pair{"min_axis", t.min_axis}, {"max_axis", t.max_axis}}) {
+    json.beginObject(name);
+    json.value("median", static_cast<double>(axis.median));
+    json.value("p5", static_cast<double>(axis.p5));
+    json.value("p95", static_cast<double>(axis.p95));
+    json.endObject();
+  }
+  json.endObject();
 }
 
 }  // namespace shadows

@@ -47,6 +47,10 @@ struct TexelStats {
 // Statistics over the counted pixels (optionally only those of one object).
 TexelStats texelStats(const std::vector<TexelPixel>& pixels, std::optional<int> object = {});
 
+class JsonWriter;
+// The report's "texels_per_pixel" object: pixels, then min_axis and max_axis (median, p5, p95).
+void writeTexelsPerPixel(JsonWriter& json, const TexelStats& stats);
+
 // The p-th percentile (0..100) by linear interpolation between ranks (p50 of an even count is
 // the mean of the middle two, as the report's medians are); sorts `values`. 0 for none.
 float percentile(std::vector<float>& values, double p);
