@@ -7,8 +7,11 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 packages=(build-essential cmake pkg-config python3-glad
   libglfw3-dev libglm-dev libosmesa6-dev libegl-dev libegl-mesa0 libimgui-dev libstb-dev
-  libembree-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev xvfb xauth gnuplot-nox nodejs
-  emscripten chromium)  # the pages and their browser tests (setup_pages.sh), before configuring
+  libembree-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev xvfb xauth gnuplot-nox nodejs)
+# The pages and their browser tests (setup_pages.sh) for the full set-up only, and before
+# configuring: tests/CMakeLists.txt registers the web tests where em++ is found. The lessons'
+# door (run.sh, --lessons) does not need them.
+[[ ${1:-} == --lessons ]] || packages+=(emscripten chromium)
 # Debian packs npm apart from node; some nodejs packages (NodeSource's) bring their own.
 command -v npm >/dev/null || packages+=(npm)
 source scripts/packages.sh
