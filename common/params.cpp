@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "json.hpp"
+#include "text.hpp"
 
 namespace shadows {
 
@@ -86,16 +87,9 @@ std::string allowed(const Param& p) {
 // In double precision, against the bounds as the decimals they were written as (addFloat's
 // 0.1f is 0.1 here, not 0.100000001): 4.9999999 is below a minimum of 5 even though it
 // rounds to 5.0f.
-// The shortest decimal that reads back as `f`: the bound as the source wrote it.
-// (What std::to_chars gives, found digit by digit: emscripten 3.1's libc++ has no float
-// to_chars.)
+// The bound as the source wrote it: the shortest decimal that reads back as `f`.
 double asWritten(float f) {
-  char buf[32];
-  for (int digits = 1; digits <= 9; ++digits) {
-    std::snprintf(buf, sizeof buf, "%.*g", digits, static_cast<double>(f));
-    if (std::strtof(buf, nullptr) == f) return std::strtod(buf, nullptr);
-  }
-  return f;
+  return std::strtod(shortestDecimal(f).c_str(), nullptr);
 }
 
 bool inRange(const Param& p, double v) {

@@ -1,7 +1,6 @@
 // Shader programs from files: #include resolved, compile errors as file:line, variants
 // selected by #defines and compiled on first use.
 #include <algorithm>
-#include <charconv>
 #include <cstdio>
 #include <fstream>
 #include <glm/gtc/type_ptr.hpp>
@@ -10,6 +9,7 @@
 #include <utility>
 
 #include "program.hpp"
+#include "text.hpp"
 
 namespace shadows {
 
@@ -135,12 +135,10 @@ GLuint compile(GLenum stage, const std::filesystem::path& file,
 }  // namespace
 
 namespace {
-// The shortest decimal that reads back as `v` (std::to_chars), with a point or an exponent
-// so that GLSL takes it as a float.
+// The shortest decimal that reads back as `v`, with a point or an exponent so that GLSL takes
+// it as a float.
 std::string glslFloat(float v) {
-  char text[32];
-  const auto end = std::to_chars(text, text + sizeof text, v).ptr;
-  std::string out(text, end);
+  std::string out = shortestDecimal(v);
   if (out.find_first_of(".en") == std::string::npos) out += ".0";
   return out;
 }

@@ -1,6 +1,7 @@
 #include "text.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 
 namespace shadows {
 
@@ -55,6 +56,15 @@ std::string printable(const std::string& text) {
     ++i;
   }
   return out;
+}
+
+std::string shortestDecimal(float f) {
+  char buf[32];
+  for (int digits = 1; digits <= 9; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, static_cast<double>(f));
+    if (std::strtof(buf, nullptr) == f) return buf;
+  }
+  return buf;  // nine digits always read back (NaN never does, and prints as nan)
 }
 
 }  // namespace shadows

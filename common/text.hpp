@@ -15,4 +15,8 @@ std::string printable(const std::string& text);
 // not start a complete, well-formed one (overlong forms and surrogates are not well-formed).
 size_t utf8SequenceLength(const std::string& text, size_t i);
 
+// The shortest decimal that reads back as `f` (what std::to_chars gives, found digit by digit:
+// emscripten 3.1's libc++ has no float to_chars), e.g. "0.1" for 0.1f, "1e-05" for 1e-5f.
+std::string shortestDecimal(float f);
+
 }  // namespace shadows

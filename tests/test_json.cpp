@@ -3,6 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <nlohmann/json.hpp>
 
@@ -72,3 +78,35 @@ TEST(Utf8, WellFormedSequencesOnly) {
 
 }  // namespace
 }  // namespace shadows
+
+// The decimals the parameter ranges and 05's compiled tap offsets are written with: each reads
+// back as the same float, and no shorter decimal would.
+TEST(ShortestDecimal, ReadsBackAndIsShortest) {
+  using shadows::shortestDecimal;
+  EXPECT_EQ(shortestDecimal(0.1f), "0.1");
+  EXPECT_EQ(shortestDecimal(1.0f), "1");
+  EXPECT_EQ(shortestDecimal(-2.5f), "-2.5");
+  EXPECT_EQ(shortestDecimal(1e-5f), "1e-05");
+  uint32_t bits = 0x3f800000u;
+  for (int i = 0; i < 20000; ++i) {
+    bits = bits * 1664525u + 1013904223u;  // a spread of floats, every exponent
+    float f;
+    std::memcpy(&f, &bits, sizeof f);
+    if (!std::isfinite(f)) continue;
+    const std::string text = shortestDecimal(f);
+    ASSERT_EQ(std::strtof(text.c_str(), nullptr), f) << text;
+    // One significant digit fewer never reads back (else it would have been chosen).
+    std::string mantissa;
+    for (const char c : text.substr(0, text.find('e'))) {
+      if (std::isdigit(static_cast<unsigned char>(c)) && !(mantissa.empty() && c == '0')) {
+        mantissa += c;
+      }
+    }
+    const int significant = static_cast<int>(mantissa.size());
+    char shorter[400];  // %g of a float needs at most ~50
+    if (significant > 1) {
+      std::snprintf(shorter, sizeof shorter, "%.*g", significant - 1, static_cast<double>(f));
+      EXPECT_NE(std::strtof(shorter, nullptr), f) << text << " vs " << shorter;
+    }
+  }
+}
