@@ -313,6 +313,10 @@ class Runner {
   Scene scene_;
   std::vector<glm::mat4> preset_models_;
   std::unique_ptr<Measure> measure_, baseline_measure_;
+  // The texel measure's frame draws into this one, enabled: the lesson draws with the very
+  // variants a timed frame uses (05's counted kernel, not an uncounted twin), and the frame's
+  // counters stay out of the report's.
+  std::unique_ptr<Measure> texel_measure_;
   long long baseline_frames_ = 0;
   bool in_baseline_ = false;
   void initImGuiGl();  // the ImGui GL backend (both window and headless)

@@ -73,7 +73,10 @@ const std::vector<TexelPixel>* Runner::measureTexels() {
     const int w = options_.width, h = options_.height;
     gpu_->ensureTargets(w, h);
     const GLuint fbo = gpu_->float_target->id();
-    renderInto(fbo, w, h, "texels", false, false);
+    if (!texel_measure_) texel_measure_ = std::make_unique<Measure>();
+    std::swap(measure_, texel_measure_);
+    renderInto(fbo, w, h, "texels", /*timed=*/true, false);
+    std::swap(measure_, texel_measure_);
     texel_pixels_.clear();
     texel_stats_.reset();
     if (shadow_sampling_) {

@@ -26,6 +26,9 @@
 namespace shadows {
 
 void Runner::writeReport(JsonWriter& json) {
+  // Where the map's texels land (texel_density.hpp), for lessons with a map this frame:
+  // measured first, so the GL errors and compiled variants below include its frame.
+  const bool texels = measureTexels() != nullptr;
   json.beginObject();
   json.value("lesson", name_);
   json.value("renderer", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
@@ -84,8 +87,7 @@ void Runner::writeReport(JsonWriter& json) {
   json.endArray();
   json.value("shader_variants_compiled", ProgramVariants::compiledTotal() - compiled_at_start_);
   lesson_->report(json);
-  // Where the map's texels land (texel_density.hpp), for lessons with a map this frame.
-  if (measureTexels() != nullptr) {
+  if (texels) {
     const TexelStats& t = *texel_stats_;
     writeTexelsPerPixel(json, t);
     json.value("undersampled_pct", t.undersampled_pct);
