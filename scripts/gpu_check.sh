@@ -128,7 +128,7 @@ if [ $short = 1 ]; then
   sweep shadow_cost 60 '--benchmark_filter=/cubes/.*/lesson_tag:03/'
   sweep pcf_cost 60 '--benchmark_filter=/cubes/'
   sweep 06_dual_texture_8bit 60 '--benchmark_filter=/dueling/size:256/.*/depth_bits:24/'
-  sweep 08_atmospherics 60 '--benchmark_filter=/slices:(4|8)/jitter:false/size:256/'
+  sweep 08_atmospherics 60 '--benchmark_filter=/slices:(16|32)/downsample:2/'
 else
   sweep shadow_cost 110
   sweep pcf_cost 45
@@ -272,13 +272,16 @@ target_row() {  # target_row TEXT LIMIT GPU_RATIO LLVMPIPE_RATIO
   done
   echo "## 08's slices (bench/08_atmospherics.csv)"
   echo
-  echo "| air.slices | frame ms | air pass ms | air rel. RMSE | llvmpipe frame ms |"
-  echo "|---|---|---|---|---|"
-  for n in 4 8 16 32 48 64 96 128; do
-    csv=$out/bench/08_atmospherics.csv
-    ms=$(median "$csv" frame_ms air.slices=$n)
-    [ "$ms" = nan ] && continue
-    echo "| $n | $ms | $(median "$csv" pass_ms.air air.slices=$n) | $(median "$csv" air_rel_rmse air.slices=$n) | $(median "$share/llvmpipe/bench_08_atmospherics.csv" frame_ms air.slices=$n) |"
+  echo "| air.slices | air.downsample | frame ms | air pass ms | air rel. RMSE | llvmpipe frame ms |"
+  echo "|---|---|---|---|---|---|"
+  for n in 16 24 32 48 64 96 128; do
+    for d in 1 2 3 4; do
+      csv=$out/bench/08_atmospherics.csv
+      at="air.slices=$n air.downsample=$d"
+      ms=$(median "$csv" frame_ms $at)
+      [ "$ms" = nan ] && continue
+      echo "| $n | $d | $ms | $(median "$csv" pass_ms.air $at) | $(median "$csv" air_rel_rmse $at) | $(median "$share/llvmpipe/bench_08_atmospherics.csv" frame_ms $at) |"
+    done
   done
   echo
   echo "## Steps"

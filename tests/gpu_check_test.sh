@@ -48,7 +48,7 @@ for row in "03 defaults, map cached: frame / unshadowed frame" \
 done
 grep -q '^| read_pixels | ' "$summary" || fail "no copy-path row"
 grep -q '^| copy_texture | ' "$summary" || fail "no copy-path row for copy_texture"
-grep -q '^| 4 | [0-9]' "$summary" || fail "no slice row"
+grep -q '^| 16 | 2 | [0-9]' "$summary" || fail "no slice row"
 for csv in shadow_cost pcf_cost 06_dual_texture_8bit 08_atmospherics; do
   grep -q 'llvmpipe' "$tmp/out/bench/$csv.csv" 2> /dev/null || fail "bench/$csv.csv missing"
 done

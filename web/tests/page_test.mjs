@@ -28,12 +28,14 @@ const kMeanLevels = Number(process.env.SHADOWS_WEB_MEAN ?? 0.25);
 // 03 has no bias on purpose, and its lit casters show acne, a moire of those roundings
 // (measured 750-1546 pixels moved, mean 0.8-2.5 levels); 06's difference view marks where 8
 // bits and the exact depth disagree on the casters (243, mean 0.24); 07's digit views draw
-// the little digit's contours (226-924 pixels, mean 0.5-0.9). Those views get room for it, no
-// more than the control below leaves failing.
+// the little digit's contours (226-924 pixels, mean 0.5-0.9); 10's plane-optimal map is made
+// for the floor, and the casters' lit faces above it show acne in the visibility view (593,
+// mean 2.0). Those views get room for it, no more than the control below leaves failing.
 const kRoundingViews = {
   '03_shadow_map_basic': ['shaded', 'visibility', 'light_view', 'compare'],
   '06_dual_texture_8bit': ['difference'],
   '07_multidigit_16bit': ['big_digit', 'little_digit', 'passes'],
+  '10_plane_optimal': ['visibility'],
 };
 const kRoundingMoved8Fraction = 0.03, kRoundingMeanLevels = 3.5;
 // "" when `web` is within that tolerance of `native`, else what is off.
