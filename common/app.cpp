@@ -349,11 +349,19 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
   resetGlState();  // every lesson starts from the same GL state
   if (frame.mode == "truth" || frame.mode == "error") {
     measure_->setEnabled(false);
+#ifndef __EMSCRIPTEN__
     measureError();
+#else
+    // A page cannot wait seconds for the rays: it shows the last truth measured while its Web
+    // Worker traces the current one, which the window loop starts once the sliders rest (here
+    // instead when the page measures no error otherwise, ?no-truth).
+    if (!options_.truth && error_key_ != errorKey()) beginErrorMeasure();
+#endif
     measure_->setEnabled(timed);
-    if (!kHaveTruth)
+    const Image& shown = frame.mode == "truth" ? truth_image_ : error_image_;
+    if (!haveTruth() || shown.rgba.empty())
       frame.clearTarget(Frame::kNoTruthColor);  // a plain picture; the panel says why
-    showImage(frame, frame.mode == "truth" ? truth_image_ : error_image_);
+    showImage(frame, shown);
   } else {
     // The texel views are the runner's, drawn over the lesson's shaded frame, whose map
     // they measure: `aliasing` (offered by map lessons) and `texels` (measureTexels()).

@@ -226,7 +226,14 @@ class Runner {
   // there (true then). One job at a time; measureError() waits for a running one.
   void beginErrorMeasure();
   bool pollErrorMeasure();
-  bool errorMeasureRunning() const { return truth_job_.valid(); }
+  bool errorMeasureRunning() const { return truth_job_.valid() || page_job_ != nullptr; }
+  // The running measure's progress in [0, 1], or -1 when not known (natively) or none runs.
+  double errorMeasureProgress() const;
+  // Whether the truth and error views can show anything: the build has a tracer, and a page
+  // loaded its own (truthUnavailable() says why not).
+  static bool haveTruth();
+  // How many truths have been installed so far (a page's tests wait on it).
+  long long truthsMeasured() const { return truths_measured_; }
   // The last error measured (may be stale while sliders move): lessons name it in their panel.
   const ErrorState& lastError() const { return error_; }
   Image readImage() const;
@@ -355,6 +362,9 @@ class Runner {
   static TruthResult traceTruth(TruthInputs inputs);  // any thread: no GL, no runner state
   void installTruth(TruthResult result);
   std::future<TruthResult> truth_job_;
+  // A page's measure: what its Web Worker's trace will be compared with (no threads there).
+  std::shared_ptr<TruthInputs> page_job_;
+  long long truths_measured_ = 0;
   glm::vec2 mouse_{-1.0f};
   bool mouse_down_ = false;
   double last_time_ = 0.0;

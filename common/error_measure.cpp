@@ -204,10 +204,7 @@ Runner::TruthInputs Runner::gatherTruthInputs() {
 
 Runner::TruthResult Runner::traceTruth(TruthInputs in) {
 #if !SHADOWS_HAVE_TRUTH
-  // This build has no ray tracer (the browser's: Embree is native only). The browser's truth
-  // plugs in here: these inputs as a truth job for web/truth's traceTruth(job), its visibility
-  // (and air) back into the same metrics and pictures below. Until then nothing calls this
-  // (measureError says so first).
+  // This build has no ray tracer: nothing calls this (measureError says so first).
   (void)in;
   throw std::logic_error("no ray-traced truth in this build");
 #else
@@ -305,22 +302,31 @@ void Runner::installTruth(TruthResult result) {
   error_image_ = std::move(result.error_image);
   truth_image_ = std::move(result.truth_image);
   air_truth_ = std::move(result.air);
+  ++truths_measured_;
+}
+
+bool Runner::haveTruth() {
+  return kHaveTruth && truthTracerAvailable();
 }
 
 const ErrorState& Runner::measureError() {
-  if (!kHaveTruth) {  // nothing to measure against: the views and the panel say so
+  if (!haveTruth()) {  // nothing to measure against: the views and the panel say so
     error_ = {};
     truth_image_ = error_image_ = {};
     return error_;
   }
   if (truth_job_.valid()) installTruth(truth_job_.get());  // a window's job: wait for it
+  // A page cannot wait for its worker; its answer, when it comes, answers no job any more.
+  page_job_.reset();
   if (error_.valid && errorKey() == error_key_) return error_;
   installTruth(traceTruth(gatherTruthInputs()));
   return error_;
 }
 
+#ifndef __EMSCRIPTEN__
+
 void Runner::beginErrorMeasure() {
-  if (truth_job_.valid()) return;
+  if (errorMeasureRunning() || !haveTruth()) return;
   truth_job_ = std::async(std::launch::async, &Runner::traceTruth, gatherTruthInputs());
 }
 
@@ -332,5 +338,44 @@ bool Runner::pollErrorMeasure() {
   installTruth(truth_job_.get());
   return true;
 }
+
+double Runner::errorMeasureProgress() const {
+  return -1.0;
+}
+
+#else  // a page: no threads, so the rays are traced by its Web Worker (web/truth/page.mjs)
+
+void Runner::beginErrorMeasure() {
+  if (errorMeasureRunning() || !haveTruth()) return;
+  auto inputs = std::make_shared<TruthInputs>(gatherTruthInputs());
+  if (postTruthJob(serializeTruthJob(inputs->job))) {
+    page_job_ = std::move(inputs);
+  } else {
+    installTruth(traceTruth(std::move(*inputs)));  // no worker: on this thread, the page waits
+  }
+}
+
+bool Runner::pollErrorMeasure() {
+  if (!page_job_) return false;
+  PageTraceAnswer answer = takeTruthTrace();
+  if (answer.state == PageTraceAnswer::State::kNone) return false;
+  std::shared_ptr<TruthInputs> inputs = std::move(page_job_);
+  if (answer.state == PageTraceAnswer::State::kFailed) {
+    // Not again for the same settings (the console says why); the panel says it failed.
+    error_ = {};
+    error_key_ = inputs->key;
+    truth_image_ = error_image_ = {};
+    return false;
+  }
+  inputs->given = parseTruthTrace(answer.trace_bytes);
+  installTruth(traceTruth(std::move(*inputs)));
+  return true;
+}
+
+double Runner::errorMeasureProgress() const {
+  return page_job_ ? std::max(truthTraceProgress(), 0.0) : -1.0;
+}
+
+#endif
 
 }  // namespace shadows

@@ -2,6 +2,7 @@
 #include "app.hpp"
 
 #include "runner_gpu.hpp"
+#include "truth_job.hpp"
 
 #include "context.hpp"
 #include "json.hpp"
@@ -51,7 +52,12 @@ std::string Runner::counterSummary() const {
 }
 
 std::string Runner::truthUnavailable() {
-  return kHaveTruth ? "" : std::string(kNoTruthNote) + ": the truth and error views are empty";
+  if (!kHaveTruth) return std::string(kNoTruthNote) + ": the truth and error views are empty";
+  if (!truthTracerAvailable()) {
+    return "the page could not load its ray tracer (web/truth): the truth and error views are "
+           "empty";
+  }
+  return "";
 }
 
 bool Runner::panelDue(int width, int height) {
@@ -199,10 +205,15 @@ void Runner::drawPanel(Frame& frame) {
     }
     ImGui::TextWrapped("%s", counterSummary().c_str());
   }
-  if (!kHaveTruth && ImGui::CollapsingHeader("Error", ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (!haveTruth() && ImGui::CollapsingHeader("Error", ImGuiTreeNodeFlags_DefaultOpen)) {
     ImGui::TextWrapped("%s", truthUnavailable().c_str());
   }
-  if (options_.truth && ImGui::CollapsingHeader("Error", ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (haveTruth() && options_.truth &&
+      ImGui::CollapsingHeader("Error", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (errorMeasureRunning() && errorMeasureProgress() >= 0.0) {
+      // A page's worker takes seconds; natively the truth is there before this shows.
+      ImGui::TextDisabled("tracing the truth: %.0f%%", 100.0 * errorMeasureProgress());
+    }
     if (error_.valid) {
       const ErrorMetrics& e = error_.metrics;
       ImGui::TextWrapped("false shadow %.3f%%  false lit %.3f%%", e.false_shadow_pct,

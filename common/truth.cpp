@@ -358,4 +358,8 @@ std::shared_ptr<const TruthTracer> makeTruthTracer(const TruthJob& job) {
   return std::make_shared<EmbreeTracer>(job);
 }
 
+bool truthTracerAvailable() {
+  return true;
+}
+
 }  // namespace shadows

@@ -66,6 +66,22 @@ class TruthTracer {
 
 // Embree natively (truth.cpp), the page's JavaScript under emscripten (truth_job_web.cpp).
 std::shared_ptr<const TruthTracer> makeTruthTracer(const TruthJob& job);
+// Whether makeTruthTracer can answer: always natively; in a page, once it installed its tracer
+// (web/truth/page.mjs), which a page that could not load it has not.
+bool truthTracerAvailable();
+
+#ifdef __EMSCRIPTEN__
+// A page has no threads: its Web Worker traces a job while frames go on (web/truth/page.mjs).
+// Post a job's bytes (false: the page has no worker); then take its answer once it is there.
+bool postTruthJob(const std::vector<std::uint8_t>& job_bytes);
+struct PageTraceAnswer {
+  enum class State { kNone, kDone, kFailed } state = State::kNone;
+  std::vector<std::uint8_t> trace_bytes;  // kDone
+};
+PageTraceAnswer takeTruthTrace();
+// The running job's progress in [0, 1], or -1 when none runs.
+double truthTraceProgress();
+#endif
 
 // The job's and the trace's bytes (little-endian, 4-byte fields; web/truth/README.md).
 std::vector<std::uint8_t> serializeTruthJob(const TruthJob& job);

@@ -38,6 +38,31 @@ EM_JS(int, shadows_trace_truth_js, (const unsigned char* job, int size, unsigned
   HEAPU32[out >> 2] = at;
   return trace.length;
 });
+
+// The worker's side (web/truth/page.mjs): post a copy of the job; take the answer as malloc'ed
+// bytes at *out (its size), -1 while none is there, -2 when the worker failed.
+EM_JS(int, shadows_post_truth_job_js, (const unsigned char* job, int size), {
+  if (typeof Module.shadowsPostTruthJob !== 'function') return 0;
+  return Module.shadowsPostTruthJob(HEAPU8.slice(job, job + size)) ? 1 : 0;
+});
+EM_JS(int, shadows_take_truth_trace_js, (unsigned char** out), {
+  const answer = typeof Module.shadowsTakeTruthTrace === 'function' ? Module.shadowsTakeTruthTrace() : null;
+  if (answer === null) return -1;
+  if (!answer.trace) {
+    console.error('shadows: the truth worker failed: ' + answer.error);
+    return -2;
+  }
+  const at = _malloc(answer.trace.length);
+  HEAPU8.set(answer.trace, at);
+  HEAPU32[out >> 2] = at;
+  return answer.trace.length;
+});
+EM_JS(double, shadows_truth_progress_js, (), {
+  return typeof Module.shadowsTruthProgress === 'number' ? Module.shadowsTruthProgress : -1;
+});
+EM_JS(int, shadows_truth_installed_js, (), {
+  return typeof Module.shadowsTraceTruth === 'function' ? 1 : 0;
+});
 // clang-format on
 
 class PageTracer final : public shadows::TruthTracer {
@@ -70,6 +95,33 @@ namespace shadows {
 // The page keeps its own BVH per scene (truth.mjs caches it by the job's scene id).
 std::shared_ptr<const TruthTracer> makeTruthTracer(const TruthJob& job) {
   return std::make_shared<PageTracer>(job.sceneId());
+}
+
+bool truthTracerAvailable() {
+  return shadows_truth_installed_js() != 0;
+}
+
+bool postTruthJob(const std::vector<std::uint8_t>& job_bytes) {
+  return shadows_post_truth_job_js(job_bytes.data(), static_cast<int>(job_bytes.size())) != 0;
+}
+
+PageTraceAnswer takeTruthTrace() {
+  unsigned char* at = nullptr;
+  const int size = shadows_take_truth_trace_js(&at);
+  PageTraceAnswer answer;
+  if (size == -1) return answer;
+  if (size < 0) {
+    answer.state = PageTraceAnswer::State::kFailed;
+    return answer;
+  }
+  answer.state = PageTraceAnswer::State::kDone;
+  answer.trace_bytes.assign(at, at + size);
+  std::free(at);
+  return answer;
+}
+
+double truthTraceProgress() {
+  return shadows_truth_progress_js();
 }
 
 }  // namespace shadows

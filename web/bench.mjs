@@ -2,8 +2,10 @@
 //  - 03's default frame in headless Chromium (SwiftShader) against the native lesson on
 //    llvmpipe at the same size, interleaved rounds, medians (the report's frame_ms, bracketed
 //    by glFinish; the page's time between shown frames, frame rate limit lifted);
-//  - each page's download, gzip-compressed as a web server would send it;
-//  - page load to first frame (navigation start to the first frame the page reports).
+//  - each page's download, gzip-compressed as a web server would send it (the truth's modules
+//    and libraries included: every page loads them);
+//  - page load to first frame (navigation start to the first frame the page reports);
+//  - the truth at each page's defaults: its worker's time from the job to the answer.
 //   node web/bench.mjs [--rounds N] [--size WxH]   (after scripts/setup_pages.sh and a build)
 import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -27,10 +29,12 @@ console.log(`load average at start: ${os.loadavg().map((x) => x.toFixed(2)).join
 
 // Downloads: what a browser fetches for one page, compressed (gzip -9, as a server might).
 let largest = 0;
+const truthFiles = ['truth/page.js', 'truth/truth.js', 'truth/worker.js', 'vendor/three.core.js',
+                    'vendor/three-mesh-bvh.module.js'];
 for (const l of lessons) {
   let raw = 0, gz = 0;
-  for (const ext of ['.html', '.js', '.wasm', '.data']) {
-    const bytes = fs.readFileSync(path.join(site, l + ext));
+  for (const file of [...['.html', '.js', '.wasm', '.data'].map((ext) => l + ext), ...truthFiles]) {
+    const bytes = fs.readFileSync(path.join(site, file));
     raw += bytes.length;
     gz += zlib.gzipSync(bytes, { level: 9 }).length;
   }
@@ -52,7 +56,8 @@ try {
     if (run.status !== 0) throw new Error(`native run failed: ${run.stderr}`);
     frame.native.push(JSON.parse(fs.readFileSync(report, 'utf8')).frame_ms);
     // Web: the same frame and the same median, read from the page once 30 frames are timed.
-    const page = await open(browser, `${server.url}${lesson}.html?size=${size}&hide-panel`);
+    // No truth: its worker would take a core from the frames being timed.
+    const page = await open(browser, `${server.url}${lesson}.html?size=${size}&hide-panel&no-truth`);
     await page.waitFor('shadowsPage.frames >= 1', 60000);
     firstFrame.push(await page.evaluate('shadowsPage.firstFrameMs'));
     await page.waitFor('shadowsPage.frames >= 45', 120000);
@@ -63,11 +68,14 @@ try {
     console.log(`round ${r + 1}: native ${frame.native.at(-1).toFixed(2)} ms, web ${frame.web.at(-1).toFixed(2)} ms, ` +
                 `first frame ${firstFrame.at(-1).toFixed(0)} ms after navigation`);
   }
-  // Every page's load to first frame, once each.
+  // Every page's load to first frame, once each, then its first truth (at rest, as a student
+  // opens it: the panel's size, the lesson's defaults).
   for (const l of lessons) {
     const page = await open(browser, `${server.url}${l}.html`);
     await page.waitFor('shadowsPage.frames >= 1', 60000);
     console.log(`load to first frame ${l}: ${(await page.evaluate('shadowsPage.firstFrameMs')).toFixed(0)} ms`);
+    await page.waitFor('Module.shadowsTruthMs.length >= 1', 600000);
+    console.log(`truth ${l}: ${(await page.evaluate('Module.shadowsTruthMs[0]')).toFixed(0)} ms in its worker`);
     await page.close();
   }
 } finally {

@@ -30,15 +30,38 @@ void failed(const std::string& line) {
   EM_ASM({ shadowsPage.failed(UTF8ToString($0)); }, line.c_str());
 }
 
-// Frame count and GL errors every frame (the tests wait on them), the panel's cost lines four
-// times a second or so.
+// The error line under the canvas: the last truth's numbers, or the worker's progress.
+std::string errorSummary() {
+  if (!Runner::haveTruth()) return Runner::truthUnavailable();
+  char line[160];
+  if (g_runner->errorMeasureRunning()) {
+    std::snprintf(line, sizeof line, "tracing the truth (three-mesh-bvh, in a worker): %.0f %%",
+                  100.0 * g_runner->errorMeasureProgress());
+    return line;
+  }
+  const shadows::ErrorState& error = g_runner->lastError();
+  if (!error.valid) return "";
+  std::snprintf(line, sizeof line,
+                "error against the ray-traced truth: false shadow %.3f %%, false lit %.3f %%",
+                error.metrics.false_shadow_pct, error.metrics.false_lit_pct);
+  return line;
+}
+
+// Frame count, GL errors and truths measured every frame (the tests wait on them), the panel's
+// cost lines four times a second or so.
 void publish() {
   const bool text = g_frames % 15 == 1;
   const std::string cost = text ? g_runner->costSummary() : std::string();
   const std::string counters = text ? g_runner->counterSummary() : std::string();
-  EM_ASM({ shadowsPage.frame($0, $1, $2 ? UTF8ToString($3) : null, UTF8ToString($4)); },
-         static_cast<double>(g_frames), shadows::GlErrorLog::count(), text ? 1 : 0, cost.c_str(),
-         counters.c_str());
+  const std::string error = text ? errorSummary() : std::string();
+  EM_ASM(
+      {
+        shadowsPage.frame($0, $1, $2, $3 ? UTF8ToString($4) : null, UTF8ToString($5),
+                          UTF8ToString($6));
+      },
+      static_cast<double>(g_frames), shadows::GlErrorLog::count(),
+      static_cast<double>(g_runner->truthsMeasured()), text ? 1 : 0, cost.c_str(), counters.c_str(),
+      error.c_str());
 }
 
 void frame() {
@@ -66,7 +89,6 @@ int main(int argc, char** argv) {
   const std::string name = shadows::registeredLessons().at(0);
   const auto make = [&](shadows::RunOptions options) {
     options.force_window = true;
-    options.truth = false;  // no ray-traced truth in the browser yet (Runner::traceTruth)
     return std::make_unique<Runner>(name, shadows::makeLesson(name), options);
   };
   try {

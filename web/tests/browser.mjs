@@ -13,12 +13,14 @@ const kTypes = {
   '.css': 'text/css', '.json': 'application/json', '.svg': 'image/svg+xml',
 };
 
-// Serves `root` on 127.0.0.1 (`port`, or a free one); resolves to { url, close() }.
-export function serve(root, port = 0) {
+// Serves `root` on 127.0.0.1 (`port`, or a free one); resolves to { url, close() }. Paths
+// matching `hide` (a RegExp) are not found, as on a server missing those files.
+export function serve(root, port = 0, hide = null) {
   const server = http.createServer((req, res) => {
     const rel = decodeURIComponent(new URL(req.url, 'http://x').pathname);
     const file = path.join(root, path.normalize(rel).replace(/^(\.\.[/\\])+/, ''));
     fs.readFile(file.endsWith('/') ? file + 'index.html' : file, (err, data) => {
+      if (hide && hide.test(rel)) err = new Error('hidden');
       if (err) {
         res.writeHead(404);
         res.end('not found');

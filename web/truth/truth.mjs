@@ -187,7 +187,7 @@ function countedPixel(job, i) {
 }
 
 // Truth::visibility: the fraction of the light each counted pixel's surface sees.
-function visibility(job, unoccluded) {
+function visibility(job, unoccluded, progress) {
   const light = job.light;
   const w = job.width, h = job.height;
   let axis = [0, 0, 0];
@@ -208,6 +208,7 @@ function visibility(job, unoccluded) {
   };
   const out = new Float32Array(w * h).fill(NOT_COUNTED);
   for (let i = 0; i < w * h; i++) {
+    if (i % w === 0) progress(i / w / h);
     const c = countedPixel(job, i);
     if (!c) continue;
     const o = add(c.p, scale(c.n, offset));
@@ -275,7 +276,7 @@ function clipToFrustum(lvp, o, d, tmax) {
 }
 
 // Truth::airLight: single scattering along each pixel's eye ray, two interleaved halves.
-function airLight(job, unoccluded) {
+function airLight(job, unoccluded, progress) {
   const air = job.air, w = job.width, h = job.height;
   const P = job.surfacePosition, N = job.surfaceNormal;
   const n = Math.max(2, Math.trunc(air.samples / 2) * 2);
@@ -283,6 +284,7 @@ function airLight(job, unoccluded) {
   const halfDifference = new Float32Array(w * h).fill(-1);
   const minusDirection = air.lightDirection.map((x) => -x);
   for (let y = 0; y < h; y++) {
+    progress(y / h);
     for (let x = 0; x < w; x++) {
       const i = y * w + x;
       const ndc = [f(f(f(f(x + 0.5) / w) * 2) - 1), f(f(f(f(y + 0.5) / h) * 2) - 1)];
@@ -328,14 +330,17 @@ function airLight(job, unoccluded) {
 }
 
 // The truth for a job (parsed, or its bytes): { visibility, air: { light, noise } | null },
-// in the native tracer's layout (rows bottom-up, kNotCounted = -1).
-export function traceTruth(jobOrBytes) {
+// in the native tracer's layout (rows bottom-up, kNotCounted = -1). `progress(fraction)`, if
+// given, is called once a row with the fraction of the whole job done.
+export function traceTruth(jobOrBytes, progress = () => {}) {
   const job = jobOrBytes.surfacePosition ? jobOrBytes : parseJob(jobOrBytes);
   const { unoccluded } = sceneOf(job);
-  return {
-    visibility: visibility(job, unoccluded),
-    air: job.air ? airLight(job, unoccluded) : null,
-  };
+  // Air rays are about as many again as the visibility's: each half of the job.
+  const share = job.air ? 0.5 : 1;
+  const vis = visibility(job, unoccluded, (done) => progress(share * done));
+  const air = job.air ? airLight(job, unoccluded, (done) => progress(0.5 + 0.5 * done)) : null;
+  progress(1);
+  return { visibility: vis, air };
 }
 
 // A trace's bytes back (the native runner's --truth-result, or serializeTrace's).
