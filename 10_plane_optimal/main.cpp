@@ -13,9 +13,6 @@
 //   the warped z/w, so the warp changes sampling and nothing else.
 #include <imgui.h>
 
-#include <algorithm>
-#include <cstdio>
-
 #include "app.hpp"
 #include "json.hpp"
 #include "shadow_map.hpp"
@@ -116,8 +113,7 @@ class PlaneOptimal final : public Lesson {
       json.value("lispsm_n_used", static_cast<double>(n_used_));
   }
 
-  // The plane of interest and region II, per pixel: texels per pixel on the plane, and the
-  // error on the plane and in region II (where plane_optimal promises nothing).
+  // Texels per pixel on the plane of interest (002's guarantee is about it alone).
   void reportPixels(JsonWriter& json, const PixelMeasures& m) const override {
     json.beginObject("plane");
     json.value("name", plane_.name());
@@ -125,23 +121,20 @@ class PlaneOptimal final : public Lesson {
     if (m.texels != nullptr && plane_index_ >= 0) {
       writeTexelsPerPixel(json, texelStats(*m.texels, plane_index_));
     }
-    if (m.error != nullptr) {
-      const RegionError plane = regionError(*m.error, [&](glm::vec4 p) {
-        return plane_index_ >= 0 && static_cast<int>(p.w) == plane_index_;
-      });
-      writeRegionError(json, plane);
-    }
     json.endObject();
-    if (m.error != nullptr) {
-      json.beginObject("region_two");
-      const RegionError two = regionError(*m.error, [&](glm::vec4 p) {
-        return !inRegionOne(glm::vec3(p), light_, plane_space_, camera_, plane_inverse_,
-                            plane_half_) ||
-               plane_index_ < 0;
-      });
-      writeRegionError(json, two);
-      json.endObject();
-    }
+  }
+
+  // The error on the plane and in region II, where plane_optimal promises nothing (without a
+  // plane, everything is region II).
+  std::vector<ErrorRegion> errorRegions() const override {
+    return {{"plane",
+             [this](glm::vec4 p) {
+               return plane_index_ >= 0 && static_cast<int>(p.w) == plane_index_;
+             }},
+            {"region_two", [this](glm::vec4 p) {
+               return plane_index_ < 0 || !inRegionOne(glm::vec3(p), light_, plane_space_, camera_,
+                                                       plane_inverse_, plane_half_);
+             }}};
   }
 
   void panel(Frame&) override {
@@ -151,29 +144,6 @@ class PlaneOptimal final : public Lesson {
   }
 
  private:
-  struct RegionError {
-    long long pixels = 0, false_shadow = 0, false_lit = 0;
-  };
-  template <class Inside>
-  static RegionError regionError(const ErrorPixels& e, Inside inside) {
-    RegionError r;
-    for (size_t i = 0; i < e.truth.size(); ++i) {
-      const glm::vec4 p = e.position[i];
-      if (!(e.truth[i] >= 0.0f) || !(e.weight[i] > 0.0f) || p.w < 0.0f || !inside(p)) continue;
-      ++r.pixels;
-      const bool truth_lit = e.truth[i] >= 0.5f, lit = e.rendered[i] >= 0.5f;
-      if (truth_lit && !lit) ++r.false_shadow;
-      if (!truth_lit && lit) ++r.false_lit;
-    }
-    return r;
-  }
-  static void writeRegionError(JsonWriter& json, const RegionError& r) {
-    const double n = static_cast<double>(std::max(r.pixels, 1LL));
-    json.value("counted_pixels", r.pixels);
-    json.value("false_shadow_pct", 100.0 * static_cast<double>(r.false_shadow) / n);
-    json.value("false_lit_pct", 100.0 * static_cast<double>(r.false_lit) / n);
-  }
-
   // This frame's plane of interest (the named object's surface), the light as a homogeneous
   // point, the camera, and the matrix each projection gives, or uniform with the reason.
   void chooseProjection(const Frame& f) {

@@ -102,19 +102,19 @@ struct Frame {
   void drawFullscreen(const Program& program, bool inset = false) const;
 };
 
-// Per pixel, what the last error measure compared: a lesson breaks its metrics down by the
-// regions it knows (lesson 10: the plane of interest, region II).
-struct ErrorPixels {
-  std::vector<float> rendered, truth, weight;  // compareVisibility's inputs
-  std::vector<glm::vec4> position;             // world xyz, w the object (-1: not counted)
-};
-
-// What Lesson::reportPixels gets: the texel pass (null without a map) and the error's pixels
-// (null before the truth was measured), row by row from the bottom, width x height.
+// What Lesson::reportPixels gets: the texel pass (null without a map), row by row from the
+// bottom, width x height.
 struct PixelMeasures {
   int width = 0, height = 0;
   const std::vector<TexelPixel>* texels = nullptr;
-  const ErrorPixels* error = nullptr;
+};
+
+// A part of the frame a lesson measures the error on by itself (lesson 10: the plane of
+// interest, region II): its name under the report's `error`, and whether a pixel is in it, by
+// the world position (xyz) and object index (w) it shows.
+struct ErrorRegion {
+  std::string name;
+  std::function<bool(glm::vec4 position)> inside;
 };
 
 class Lesson {
@@ -129,8 +129,12 @@ class Lesson {
   virtual void render(Frame& frame) = 0;     // draw frame.mode into frame.target
   virtual void panel(Frame&) {}              // extra ImGui lines under the sliders
   virtual void report(JsonWriter&) const {}  // extra report fields (what the lesson derived)
-  // Report fields measured per pixel (the runner's texel pass, the error's pixels).
+  // Report fields measured per pixel by the runner's texel pass.
   virtual void reportPixels(JsonWriter&, const PixelMeasures&) const {}
+  // The regions whose error the runner reports as `error.<name>` (counted_pixels,
+  // false_shadow_pct, false_lit_pct), this frame's: every figure derived from the truth lives
+  // under `error`, which is there exactly when the truth was traced.
+  virtual std::vector<ErrorRegion> errorRegions() const { return {}; }
   // Shared parameters (light.fov, light.near, ...) this lesson has no use for: the runner
   // does not offer them.
   virtual std::vector<std::string> unusedSharedParams() const { return {}; }

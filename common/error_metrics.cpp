@@ -50,6 +50,22 @@ ErrorMetrics compareVisibility(const std::vector<float>& rendered, const std::ve
   return m;
 }
 
+ErrorMetrics compareVisibilityIn(const ErrorPixels& pixels,
+                                 const std::function<bool(glm::vec4 position)>& inside) {
+  if (pixels.position.size() != pixels.truth.size()) {
+    throw std::invalid_argument("compareVisibilityIn: positions and pixels differ in size");
+  }
+  // Outside the region a pixel weighs nothing, which compareVisibility does not count.
+  std::vector<float> weight = pixels.weight;
+  for (std::size_t i = 0; i < weight.size() && i < pixels.position.size(); ++i) {
+    const glm::vec4 p = pixels.position[i];
+    if (p.w < 0.0f || !inside(p)) weight[i] = 0.0f;
+  }
+  ErrorMetrics m = compareVisibility(pixels.rendered, pixels.truth, weight);
+  m.nonfinite_pixels = 0;  // compareVisibility counts them in every pixel, not the region's
+  return m;
+}
+
 std::vector<std::uint8_t> errorImage(const std::vector<std::uint8_t>& shadedRgba,
                                      const std::vector<float>& rendered,
                                      const std::vector<float>& truth) {

@@ -112,12 +112,22 @@ void Runner::writeReport(JsonWriter& json) {
       if (!e.air.note.empty()) json.value("air_note", e.air.note);
       if (!e.air.rel_rmse_note.empty()) json.value("air_rel_rmse_note", e.air.rel_rmse_note);
     }
+    // The lesson's regions, after the whole frame's figures so that a first match of a
+    // metric's name is the frame's; only from pixels of this very frame (a window's error may
+    // be stale while the lesson's regions are not).
+    if (error_.pixels && error_key_ == errorKey()) {
+      for (const ErrorRegion& region : lesson_->errorRegions()) {
+        const ErrorMetrics r = compareVisibilityIn(*error_.pixels, region.inside);
+        json.beginObject(region.name);
+        json.value("counted_pixels", r.counted_pixels);
+        json.value("false_shadow_pct", r.false_shadow_pct);
+        json.value("false_lit_pct", r.false_lit_pct);
+        json.endObject();
+      }
+    }
     json.endObject();
   }
-  // After the error block, so that a first match of a metric's name is the whole frame's.
-  lesson_->reportPixels(json,
-                        {options_.width, options_.height, measureTexels(),
-                         error_.valid && error_key_ == errorKey() ? error_.pixels.get() : nullptr});
+  lesson_->reportPixels(json, {options_.width, options_.height, measureTexels()});
   json.endObject();
 }
 

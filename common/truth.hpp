@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <glm/glm.hpp>
 #include <memory>
 #include <string>
@@ -130,6 +131,17 @@ struct ErrorMetrics {
 // truth: from Truth::visibility; weight: from Truth::facingWeight. All the same size.
 ErrorMetrics compareVisibility(const std::vector<float>& rendered, const std::vector<float>& truth,
                                const std::vector<float>& weight);
+
+// Per pixel, what the last error measure compared, kept so that a lesson can break the error
+// down by the regions it knows (lesson 10: the plane of interest, region II).
+struct ErrorPixels {
+  std::vector<float> rendered, truth, weight;  // compareVisibility's inputs
+  std::vector<glm::vec4> position;             // world xyz, w the object (-1: no surface)
+};
+// compareVisibility over the counted pixels that show a surface `inside` says is in the region
+// (given the pixel's ErrorPixels::position), the same definitions as the whole frame's.
+ErrorMetrics compareVisibilityIn(const ErrorPixels& pixels,
+                                 const std::function<bool(glm::vec4 position)>& inside);
 
 AirMetrics compareAir(const std::vector<float>& rendered, const Truth::AirResult& truth);
 // The error view for air: red where the picture has too much air light, blue too little,

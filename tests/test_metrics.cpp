@@ -174,6 +174,34 @@ TEST(Metrics, SizeMismatchThrows) {
                std::invalid_argument);
 }
 
+// A lesson's region (lesson 10's plane, region II): the frame's definitions over the pixels
+// inside it; pixels with no surface (w = -1) and uncounted ones are in no region.
+TEST(Metrics, RegionCountsOnlyItsOwnCountedPixels) {
+  ErrorPixels p;
+  // Object 2: correct lit, false shadow, NaN on shadowed truth (false lit, as the frame says),
+  // uncounted; object 1: false lit; no surface: a false shadow that no region may count.
+  p.rendered = {1.0f, 0.1f, kNaN, 0.0f, 0.9f, 0.0f};
+  p.truth = {1.0f, 1.0f, 0.0f, kNotCounted, 0.0f, 1.0f};
+  p.weight = {1.0f, 1.0f, 1.0f, 0.0f, 1.0f, 1.0f};
+  p.position = {{0, 0, 0, 2}, {1, 0, 0, 2}, {2, 0, 0, 2},
+                {3, 0, 0, 2}, {0, 0, 0, 1}, {0, 0, 0, -1}};
+  const ErrorMetrics two = compareVisibilityIn(p, [](glm::vec4 q) { return q.w == 2.0f; });
+  EXPECT_EQ(two.counted_pixels, 3);
+  EXPECT_DOUBLE_EQ(two.false_shadow_pct, 100.0 / 3.0);
+  EXPECT_DOUBLE_EQ(two.false_lit_pct, 100.0 / 3.0);
+  const ErrorMetrics all = compareVisibilityIn(p, [](glm::vec4) { return true; });
+  EXPECT_EQ(all.counted_pixels, 4);  // not the surfaceless pixel
+  EXPECT_DOUBLE_EQ(all.false_lit_pct, 50.0);
+  const ErrorMetrics by_position = compareVisibilityIn(p, [](glm::vec4 q) { return q.x > 0.5f; });
+  EXPECT_EQ(by_position.counted_pixels, 2);
+  EXPECT_DOUBLE_EQ(by_position.false_shadow_pct, 50.0);
+  const ErrorMetrics none = compareVisibilityIn(p, [](glm::vec4) { return false; });
+  EXPECT_EQ(none.counted_pixels, 0);
+  EXPECT_EQ(none.false_shadow_pct + none.false_lit_pct, 0.0);
+  p.position.pop_back();
+  EXPECT_THROW(compareVisibilityIn(p, [](glm::vec4) { return true; }), std::invalid_argument);
+}
+
 TEST(Metrics, ErrorImagePaintsFalseShadowMagentaAndFalseLitCyan) {
   // Pixels: uncounted, correct lit, correct shadow, false shadow, false lit,
   // NaN on lit truth, Inf on shadowed truth, uncounted with NaN.

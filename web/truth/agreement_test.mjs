@@ -143,8 +143,21 @@ try {
       if (!(d <= MAX_POINTS)) problems.push(`${field}: ${a[field]} (Embree) vs ${b[field]} (web)`);
       else worst = Math.max(worst, d);
     }
+    // A lesson's regions (error.<name>, docs/CONTRACTS.md): the same figures, region by region.
+    const regions = Object.keys(a).filter((k) => a[k] !== null && typeof a[k] === 'object');
+    for (const region of regions) {
+      const ra = a[region], rb = b[region] ?? {};
+      if (ra.counted_pixels !== rb.counted_pixels) {
+        problems.push(`${region}.counted_pixels ${ra.counted_pixels} vs ${rb.counted_pixels}`);
+      }
+      for (const field of ['false_shadow_pct', 'false_lit_pct']) {
+        const d = Math.abs((ra[field] ?? NaN) - (rb[field] ?? NaN));
+        if (!(d <= MAX_POINTS)) problems.push(`${region}.${field}: ${ra[field]} (Embree) vs ${rb[field]} (web)`);
+        else worst = Math.max(worst, d);
+      }
+    }
     console.log(`${lesson} [${name}] truth ${a.truth}: visibility equal on ${(100 * visShare).toFixed(3)} % ` +
-                `of ${counted} counted pixels${airNote}; error numbers within ${worst.toFixed(4)} points; ` +
+                `of ${counted} counted pixels${airNote}; error numbers${regions.length ? ` (${regions.join(', ')} too)` : ''} within ${worst.toFixed(4)} points; ` +
                 `web trace ${ms.toFixed(0)} ms${seam ? ' through the wasm seam' : ''}`);
     for (const p of problems) console.log(`  FAIL: ${p}`);
     failures += problems.length;
