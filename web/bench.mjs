@@ -75,7 +75,7 @@ try {
     await page.waitFor('shadowsPage.frames >= 1', 60000);
     console.log(`load to first frame ${l}: ${(await page.evaluate('shadowsPage.firstFrameMs')).toFixed(0)} ms`);
     await page.waitFor('Module.shadowsTruthMs.length >= 1', 600000);
-    console.log(`truth ${l}: ${(await page.evaluate('Module.shadowsTruthMs[0]')).toFixed(0)} ms in its worker`);
+    console.log(`truth ${l}: ${(await page.evaluate('Module.shadowsTruthMs[0]')).toFixed(0)} ms in its workers (${await page.evaluate("navigator.hardwareConcurrency")} cores)`);
     await page.close();
   }
 } finally {

@@ -35,7 +35,7 @@ std::string errorSummary() {
   if (!Runner::haveTruth()) return Runner::truthUnavailable();
   char line[160];
   if (g_runner->errorMeasureRunning()) {
-    std::snprintf(line, sizeof line, "tracing the truth (three-mesh-bvh, in a worker): %.0f %%",
+    std::snprintf(line, sizeof line, "tracing the truth (three-mesh-bvh, in Web Workers): %.0f %%",
                   100.0 * g_runner->errorMeasureProgress());
     return line;
   }

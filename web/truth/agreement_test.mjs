@@ -16,7 +16,7 @@ import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { createRequire } from 'node:module';
 import { installTruth } from './page.mjs';
-import { parseJob, parseTrace, serializeTrace, traceTruth } from './truth.mjs';
+import { joinRows, parseJob, parseTrace, serializeTrace, traceRows, traceTruth } from './truth.mjs';
 
 const [buildDir, lesson, ...rest] = process.argv.slice(2);
 const option = (name, fallback) => {
@@ -102,6 +102,18 @@ try {
     const embree = parseTrace(readFileSync(file('embree.trace')));
     const used = parseTrace(readFileSync(file('used.trace')));
     const problems = [];
+    if (!seam) {
+      // A page's workers trace bands of rows (web/truth/page.mjs): joined, the same trace.
+      const cuts = [0, 1, Math.floor(job.height / 3), job.height - 2, job.height];
+      const bands = cuts.slice(1).map((y1, k) => ({ y0: cuts[k], y1, ...traceRows(job, cuts[k], y1) }));
+      const joined = joinRows(job, bands.reverse());
+      const same = (a, b) => a.length === b.length && a.every((v, i) => Object.is(v, b[i]));
+      if (!same(joined.visibility, web.visibility) ||
+          (job.air && (!same(joined.air.light, web.air.light) ||
+                       Math.abs(joined.air.noise - web.air.noise) > 1e-12 * web.air.noise))) {
+        problems.push('bands of rows joined are not the whole trace');
+      }
+    }
     // The second run measured against the web's trace, not a fresh Embree one.
     if (!used.visibility.every((v, i) => Object.is(v, web.visibility[i]))) {
       problems.push('--truth-from did not use the web trace');

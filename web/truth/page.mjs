@@ -1,13 +1,17 @@
 // The JavaScript half of common/truth_job_web.cpp: installs the tracers the wasm runner calls.
 // A page calls installTruth(Module) before the lesson's script runs (web/shell.html).
-//  - Module.shadowsPostTruthJob(bytes) / shadowsTakeTruthTrace(): a Web Worker (worker.mjs)
-//    traces the job while frames go on; the window loop posts a job once the sliders rest and
-//    takes the answer, {trace: Uint8Array} or {error}, when it is there (null before).
-//    Module.shadowsTruthProgress: the running job's fraction done, -1 when none runs;
-//    Module.shadowsTruthMs: each answered job's time from post to answer (web/bench.mjs).
+//  - Module.shadowsPostTruthJob(bytes) / shadowsTakeTruthTrace(): Web Workers (worker.mjs),
+//    one a core, trace the job in bands of rows while frames go on; the window loop posts a
+//    job once the sliders rest and takes the answer, {trace: Uint8Array} or {error}, when it
+//    is there (null before). Module.shadowsTruthProgress: the running job's fraction done, -1
+//    when none runs; Module.shadowsTruthMs: each answered job's time (web/bench.mjs).
 //  - Module.shadowsTraceTruth(bytes): the job traced on this thread (the job's bytes in, the
 //    trace's out), for what must wait for it (a page without workers, an output asked for).
-import { parseJob, serializeTrace, traceTruth } from './truth.mjs';
+import { joinRows, parseJob, serializeTrace, traceTruth } from './truth.mjs';
+
+// Bands a job is cut into per worker: small enough that the workers finish together (a sky
+// row costs nothing, a row of area-lit floor 64 rays a pixel), large enough to cost little.
+const kBandsPerWorker = 8;
 
 export function installTruth(Module) {
   Module.shadowsTraceTruth = (bytes) => {
@@ -16,37 +20,70 @@ export function installTruth(Module) {
     return serializeTrace(job, traceTruth(job));
   };
   Module.shadowsTruthProgress = -1;
-  let worker;
+  Module.shadowsTruthMs = [];
+  const count = Math.max(1, Math.min(globalThis.navigator?.hardwareConcurrency || 2, 8));
+  const workers = [];
   try {
-    worker = new Worker(new URL('./worker.mjs', import.meta.url), { type: 'module' });
+    for (let k = 0; k < count; ++k) {
+      workers.push(new Worker(new URL('./worker.mjs', import.meta.url), { type: 'module' }));
+    }
   } catch (e) {
     console.warn('shadows: no truth worker (' + e + '): the page traces on its main thread');
+    for (const worker of workers) worker.terminate();
     return Module;
   }
-  let answer = null, failure = null, postedAt = 0;
-  Module.shadowsTruthMs = [];
-  worker.onmessage = (event) => {
-    if (typeof event.data.progress === 'number') {
-      Module.shadowsTruthProgress = event.data.progress;
-      return;
-    }
-    answer = event.data;
-    Module.shadowsTruthProgress = -1;
-    Module.shadowsTruthMs.push(performance.now() - postedAt);
-  };
-  // A worker that could not load its modules (or died) answers every job with the reason.
-  worker.onerror = (event) => {
-    event.preventDefault();
-    failure = event.message || 'the truth worker did not start';
-    answer = { error: failure };
+
+  let answer = null, failure = null;
+  let generation = 0, running = null;  // running: {job, rows left to hand out, bands, ...}
+  const finish = (result) => {
+    answer = result;
+    running = null;
     Module.shadowsTruthProgress = -1;
   };
+  const handOut = (worker) => {
+    if (!running || running.next >= running.job.height) return;
+    const y0 = running.next, y1 = Math.min(y0 + running.rows, running.job.height);
+    running.next = y1;
+    worker.postMessage({ generation, y0, y1 });
+  };
+  for (const worker of workers) {
+    worker.onmessage = (event) => {
+      const band = event.data;
+      if (!running || band.generation !== generation) return;  // a replaced job's rows
+      if (band.error !== undefined) {
+        finish({ error: band.error });
+        return;
+      }
+      running.bands.push(band);
+      running.done += band.y1 - band.y0;
+      Module.shadowsTruthProgress = running.done / running.job.height;
+      if (running.done < running.job.height) {
+        handOut(worker);
+        return;
+      }
+      Module.shadowsTruthMs.push(performance.now() - running.postedAt);
+      finish({ trace: serializeTrace(running.job, joinRows(running.job, running.bands)) });
+    };
+    // A worker that could not load its modules (or died) answers every job with the reason.
+    worker.onerror = (event) => {
+      event.preventDefault();
+      failure = event.message || 'a truth worker did not start';
+      finish({ error: failure });
+    };
+  }
   Module.shadowsPostTruthJob = (bytes) => {
-    answer = failure ? { error: failure } : null;
-    if (failure) return true;
+    answer = null;
+    if (failure) {
+      answer = { error: failure };
+      return true;
+    }
+    ++generation;
+    const job = parseJob(bytes);
+    const rows = Math.max(1, Math.ceil(job.height / (workers.length * kBandsPerWorker)));
+    running = { job, rows, next: 0, done: 0, bands: [], postedAt: performance.now() };
     Module.shadowsTruthProgress = 0;
-    postedAt = performance.now();
-    worker.postMessage(bytes, [bytes.buffer]);  // a copy of the heap's bytes, handed over
+    for (const worker of workers) worker.postMessage({ generation, job: bytes });  // copied
+    for (const worker of workers) handOut(worker);
     return true;
   };
   Module.shadowsTakeTruthTrace = () => {

@@ -186,8 +186,9 @@ function countedPixel(job, i) {
   return ndotl > 0 ? { p, n } : null;
 }
 
-// Truth::visibility: the fraction of the light each counted pixel's surface sees.
-function visibility(job, unoccluded, progress) {
+// Truth::visibility: the fraction of the light each counted pixel's surface sees, for rows
+// [y0, y1) (the rest of `out` is left as it is).
+function visibility(job, unoccluded, out, y0, y1) {
   const light = job.light;
   const w = job.width, h = job.height;
   let axis = [0, 0, 0];
@@ -206,9 +207,7 @@ function visibility(job, unoccluded, progress) {
     if (!(dist > 0)) return true;
     return unoccluded(o, divide(d, dist), f(dist * ONE_SHORT));
   };
-  const out = new Float32Array(w * h).fill(NOT_COUNTED);
-  for (let i = 0; i < w * h; i++) {
-    if (i % w === 0) progress(i / w / h);
+  for (let i = y0 * w; i < y1 * w; i++) {
     const c = countedPixel(job, i);
     if (!c) continue;
     const o = add(c.p, scale(c.n, offset));
@@ -243,7 +242,6 @@ function visibility(job, unoccluded, progress) {
     }
     out[i] = f(seen / count);
   }
-  return out;
 }
 
 // spotlight.cpp's SpotTexture::value: nearest texel, luminance.
@@ -275,16 +273,16 @@ function clipToFrustum(lvp, o, d, tmax) {
   return t1 > t0 ? [t0, t1] : null;
 }
 
-// Truth::airLight: single scattering along each pixel's eye ray, two interleaved halves.
-function airLight(job, unoccluded, progress) {
+// Truth::airLight: single scattering along each pixel's eye ray, two interleaved halves, for
+// rows [y0, y1) into `light`; returns the sum of the halves' differences over lit pixels, and
+// their count (the noise is their ratio over the whole picture).
+function airLight(job, unoccluded, light, y0, y1) {
   const air = job.air, w = job.width, h = job.height;
   const P = job.surfacePosition, N = job.surfaceNormal;
   const n = Math.max(2, Math.trunc(air.samples / 2) * 2);
-  const light = new Float32Array(w * h);
   const halfDifference = new Float32Array(w * h).fill(-1);
   const minusDirection = air.lightDirection.map((x) => -x);
-  for (let y = 0; y < h; y++) {
-    progress(y / h);
+  for (let y = y0; y < y1; y++) {
     for (let x = 0; x < w; x++) {
       const i = y * w + x;
       const ndc = [f(f(f(f(x + 0.5) / w) * 2) - 1), f(f(f(f(y + 0.5) / h) * 2) - 1)];
@@ -321,26 +319,52 @@ function airLight(job, unoccluded, progress) {
     }
   }
   let sum = 0, lit = 0;
-  for (const v of halfDifference) {
+  for (let i = y0 * w; i < y1 * w; i++) {
+    const v = halfDifference[i];
     if (v < 0) continue;
     sum += v;
     lit++;
   }
-  return { light, noise: lit > 0 ? sum / lit : 0 };
+  return { sum, lit };
+}
+
+// Rows [y0, y1) of a job's truth (a page's workers trace a job in bands of rows):
+// { visibility, light (with air), airSum, airLit } for those rows only, in the native
+// tracer's layout (rows bottom-up, kNotCounted = -1).
+export function traceRows(job, y0, y1) {
+  const { unoccluded } = sceneOf(job);
+  const w = job.width, h = job.height;
+  const vis = new Float32Array(w * h).fill(NOT_COUNTED);
+  visibility(job, unoccluded, vis, y0, y1);
+  const band = { visibility: vis.subarray(y0 * w, y1 * w), light: null, airSum: 0, airLit: 0 };
+  if (job.air) {
+    const light = new Float32Array(w * h);
+    const { sum, lit } = airLight(job, unoccluded, light, y0, y1);
+    Object.assign(band, { light: light.subarray(y0 * w, y1 * w), airSum: sum, airLit: lit });
+  }
+  return band;
+}
+
+// A job's truth from its bands (each { y0, y1, visibility, light, airSum, airLit }, covering
+// every row once): { visibility, air: { light, noise } | null }, as traceTruth returns it.
+export function joinRows(job, bands) {
+  const w = job.width, h = job.height;
+  const vis = new Float32Array(w * h), light = job.air ? new Float32Array(w * h) : null;
+  let sum = 0, lit = 0;
+  for (const band of [...bands].sort((a, b) => a.y0 - b.y0)) {
+    vis.set(band.visibility, band.y0 * w);
+    if (light) light.set(band.light, band.y0 * w);
+    sum += band.airSum;
+    lit += band.airLit;
+  }
+  return { visibility: vis, air: light ? { light, noise: lit > 0 ? sum / lit : 0 } : null };
 }
 
 // The truth for a job (parsed, or its bytes): { visibility, air: { light, noise } | null },
-// in the native tracer's layout (rows bottom-up, kNotCounted = -1). `progress(fraction)`, if
-// given, is called once a row with the fraction of the whole job done.
-export function traceTruth(jobOrBytes, progress = () => {}) {
+// in the native tracer's layout (rows bottom-up, kNotCounted = -1).
+export function traceTruth(jobOrBytes) {
   const job = jobOrBytes.surfacePosition ? jobOrBytes : parseJob(jobOrBytes);
-  const { unoccluded } = sceneOf(job);
-  // Air rays are about as many again as the visibility's: each half of the job.
-  const share = job.air ? 0.5 : 1;
-  const vis = visibility(job, unoccluded, (done) => progress(share * done));
-  const air = job.air ? airLight(job, unoccluded, (done) => progress(0.5 + 0.5 * done)) : null;
-  progress(1);
-  return { visibility: vis, air };
+  return joinRows(job, [{ y0: 0, y1: job.height, ...traceRows(job, 0, job.height) }]);
 }
 
 // A trace's bytes back (the native runner's --truth-result, or serializeTrace's).

@@ -1,21 +1,27 @@
-// The page's truth worker (web/truth/page.mjs starts it): traces each job it is sent with
-// truth.mjs off the page's main thread, so frames go on while the rays are cast. Messages out:
-// {progress} a few times a second, then {trace: Uint8Array} or {error: string}.
-import { parseJob, serializeTrace, traceTruth } from './truth.mjs';
+// One of a page's truth workers (web/truth/page.mjs starts them): it keeps the job it was last
+// sent and traces the bands of rows it is asked for, off the page's main thread, so frames go
+// on while the rays are cast. Messages in: {generation, job: Uint8Array}, then
+// {generation, y0, y1}; out: {generation, y0, y1, visibility, light, airSum, airLit}, or
+// {generation, error}.
+import { parseJob, traceRows } from './truth.mjs';
 
+let job = null, generation = -1;
 self.onmessage = (event) => {
+  const message = event.data;
   try {
-    const job = parseJob(event.data);
-    let reported = 0;
-    const trace = traceTruth(job, (done) => {
-      const now = performance.now();
-      if (now - reported < 100) return;
-      reported = now;
-      self.postMessage({ progress: done });
-    });
-    const bytes = serializeTrace(job, trace);
-    self.postMessage({ trace: bytes }, [bytes.buffer]);
+    if (message.job) {
+      job = parseJob(message.job);
+      generation = message.generation;
+      return;
+    }
+    if (message.generation !== generation) return;  // rows of a job since replaced
+    const band = traceRows(job, message.y0, message.y1);
+    // Copies of the band alone (traceRows's arrays are the whole picture's size).
+    band.visibility = band.visibility.slice();
+    if (band.light) band.light = band.light.slice();
+    self.postMessage({ generation, y0: message.y0, y1: message.y1, ...band },
+                     [band.visibility.buffer, ...(band.light ? [band.light.buffer] : [])]);
   } catch (e) {
-    self.postMessage({ error: String(e && e.stack ? e.stack : e) });
+    self.postMessage({ generation: message.generation, error: String(e && e.stack ? e.stack : e) });
   }
 };
