@@ -45,28 +45,39 @@ console.log(`largest page download: ${(largest / 1e6).toFixed(2)} MB compressed 
 
 const server = await serve(site);
 const browser = await launch(['--disable-gpu-vsync', '--disable-frame-rate-limit']);
-const frame = { web: [], native: [] }, firstFrame = [];
+// The default frame, and what it is made of: the same frame unshadowed (shadow.off), and a
+// 64x48 frame (next to nothing to shade: what a frame costs the browser, or the native run,
+// whatever it draws).
+const kCases = [{ name: 'defaults', sets: [], size }, { name: 'shadow.off', sets: ['shadow.off=true'], size },
+                { name: 'at 64x48', sets: [], size: '64x48' }];
+const frames = Object.fromEntries(kCases.map((c) => [c.name, { web: [], native: [] }]));
+const frame = frames.defaults, firstFrame = [];
 const report = path.join(os.tmpdir(), `shadows_bench_${process.pid}.json`);
 try {
   for (let r = 0; r < rounds; ++r) {
-    // Native: the report's frame_ms (median of 30 timed frames), llvmpipe, no truth.
-    const run = spawnSync(path.join(root, 'build/gles30', lesson),
-      ['--headless', '--no-truth', '--size', size, '--frames', '30', '--out', '/dev/null', '--report', report],
-      { encoding: 'utf8', env: { ...process.env, MESA_GLES_VERSION_OVERRIDE: '3.0' } });
-    if (run.status !== 0) throw new Error(`native run failed: ${run.stderr}`);
-    frame.native.push(JSON.parse(fs.readFileSync(report, 'utf8')).frame_ms);
-    // Web: the same frame and the same median, read from the page once 30 frames are timed.
-    // No truth: its worker would take a core from the frames being timed.
-    const page = await open(browser, `${server.url}${lesson}.html?size=${size}&hide-panel&no-truth`);
-    await page.waitFor('shadowsPage.frames >= 1', 60000);
-    firstFrame.push(await page.evaluate('shadowsPage.firstFrameMs'));
-    await page.waitFor('shadowsPage.frames >= 45', 120000);
-    // The median time between shown frames, the browser's frame rate limit lifted: WebGL's
-    // glFinish does not wait for the GPU process, so the runner's own median counts only calls.
-    frame.web.push(await page.evaluate('shadowsPage.medianInterval()'));
-    await page.close();
-    console.log(`round ${r + 1}: native ${frame.native.at(-1).toFixed(2)} ms, web ${frame.web.at(-1).toFixed(2)} ms, ` +
-                `first frame ${firstFrame.at(-1).toFixed(0)} ms after navigation`);
+    for (const c of kCases) {
+      const timed = frames[c.name];
+      // Native: the report's frame_ms (median of 30 timed frames), llvmpipe, no truth.
+      const run = spawnSync(path.join(root, 'build/gles30', lesson),
+        ['--headless', '--no-truth', '--size', c.size, '--frames', '30', '--out', '/dev/null', '--report', report,
+         ...c.sets.flatMap((s) => ['--set', s])],
+        { encoding: 'utf8', env: { ...process.env, MESA_GLES_VERSION_OVERRIDE: '3.0' } });
+      if (run.status !== 0) throw new Error(`native run failed: ${run.stderr}`);
+      timed.native.push(JSON.parse(fs.readFileSync(report, 'utf8')).frame_ms);
+      // Web: the same frame and the same median, read from the page once 30 frames are timed.
+      // No truth: its worker would take a core from the frames being timed.
+      const query = [`size=${c.size}`, 'hide-panel', 'no-truth', ...c.sets].join('&');
+      const page = await open(browser, `${server.url}${lesson}.html?${query}`);
+      await page.waitFor('shadowsPage.frames >= 1', 60000);
+      if (c === kCases[0]) firstFrame.push(await page.evaluate('shadowsPage.firstFrameMs'));
+      await page.waitFor('shadowsPage.frames >= 45', 120000);
+      // The median time between shown frames, the browser's frame rate limit lifted: WebGL's
+      // glFinish does not wait for the GPU process, so the runner's own median counts only calls.
+      timed.web.push(await page.evaluate('shadowsPage.medianInterval()'));
+      await page.close();
+      console.log(`round ${r + 1} ${c.name}: native ${timed.native.at(-1).toFixed(2)} ms, web ${timed.web.at(-1).toFixed(2)} ms` +
+                  (c === kCases[0] ? `, first frame ${firstFrame.at(-1).toFixed(0)} ms after navigation` : ''));
+    }
   }
   // Every page's load to first frame, once each, then its first truth (at rest, as a student
   // opens it: the panel's size, the lesson's defaults).
@@ -82,6 +93,11 @@ try {
   await browser.close();
   await server.close();
   fs.rmSync(report, { force: true });
+}
+for (const c of kCases.slice(1)) {
+  const t = frames[c.name];
+  console.log(`${lesson} ${c.name}: web median ${median(t.web).toFixed(2)} ms, native median ` +
+              `${median(t.native).toFixed(2)} ms: ${(median(t.web) / median(t.native)).toFixed(2)}x`);
 }
 const ratio = median(frame.web) / median(frame.native);
 console.log(`${lesson} at ${size}: web median ${median(frame.web).toFixed(2)} ms, native median ` +
