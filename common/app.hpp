@@ -238,6 +238,8 @@ class Runner {
   static bool haveTruth();
   // How many truths have been installed so far (a page's tests wait on it).
   long long truthsMeasured() const { return truths_measured_; }
+  // Whether a page's workers failed to trace the current settings (the console says why).
+  bool truthFailed() const { return truth_failed_; }
   // The last error measured (may be stale while sliders move): lessons name it in their panel.
   const ErrorState& lastError() const { return error_; }
   Image readImage() const;
@@ -369,6 +371,7 @@ class Runner {
   // A page's measure: what its Web Worker's trace will be compared with (no threads there).
   std::shared_ptr<TruthInputs> page_job_;
   long long truths_measured_ = 0;
+  bool truth_failed_ = false;
   glm::vec2 mouse_{-1.0f};
   bool mouse_down_ = false;
   double last_time_ = 0.0;

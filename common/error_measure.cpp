@@ -303,6 +303,7 @@ void Runner::installTruth(TruthResult result) {
   truth_image_ = std::move(result.truth_image);
   air_truth_ = std::move(result.air);
   ++truths_measured_;
+  truth_failed_ = false;
 }
 
 bool Runner::haveTruth() {
@@ -365,6 +366,7 @@ bool Runner::pollErrorMeasure() {
     error_ = {};
     error_key_ = inputs->key;
     truth_image_ = error_image_ = {};
+    truth_failed_ = true;
     return false;
   }
   inputs->given = parseTruthTrace(answer.trace_bytes);

@@ -235,6 +235,8 @@ void Runner::drawPanel(Frame& frame) {
         ImGui::TextWrapped("air: mae %.4f  rel. RMSE %.1f%% (truth mean %.3f, noise %.4f)",
                            e.air.mae, 100.0 * e.air.rel_rmse, e.air.truth_mean, e.air.truth_noise);
       }
+    } else if (truth_failed_ && error_key_ == errorKey()) {
+      ImGui::TextWrapped("the ray tracer failed: the browser's console says why");
     } else {
       ImGui::TextDisabled("not measured yet");
     }

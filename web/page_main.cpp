@@ -40,6 +40,7 @@ std::string errorSummary() {
     return line;
   }
   const shadows::ErrorState& error = g_runner->lastError();
+  if (g_runner->truthFailed()) return "the ray tracer failed: the browser's console says why";
   if (!error.valid) return "";
   std::snprintf(line, sizeof line,
                 "error against the ray-traced truth: false shadow %.3f %%, false lit %.3f %%",

@@ -239,6 +239,29 @@ try {
   }
 }
 
+// A site whose workers cannot start (truth/worker.js missing): the page says the ray tracer
+// failed, on the page and in the console, and goes on drawing.
+{
+  const partial = await serve(site, 0, /^\/truth\/worker\.js$/);
+  const bare = await launch();
+  try {
+    const page = await open(bare, `${partial.url}${lesson}.html?size=${kSize}&hide-panel&view=truth`);
+    await page.waitFor(`/ray tracer failed/.test(document.getElementById('status').textContent) ||
+                        shadowsPage.errors.length > 0`, 60000);
+    const frames = await page.evaluate('shadowsPage.frames');
+    await page.waitFor(`shadowsPage.frames >= ${frames + 5}`);
+    const failedLines = page.console.filter((c) => /the truth worker failed/.test(c.text));
+    if (failedLines.length === 0) fail('without truth/worker.js the console does not say the worker failed');
+    page.console = page.console.filter((c) => !/the truth worker failed|worker\.js|Failed to load resource/.test(c.text));
+    await checkClean(page, 'without truth/worker.js');
+  } catch (e) {
+    fail(`without truth/worker.js: ${e.message}`);
+  } finally {
+    await bare.close();
+    await partial.close();
+  }
+}
+
 // Without WebGL 2: a clear message, no blank canvas.
 {
   const bare = await launch(['--disable-webgl2', '--disable-webgl']);
