@@ -176,12 +176,9 @@ class PcfDithered final : public Lesson {
   std::vector<std::string> kernelDefines(pcf::Mode mode) const {
     if (mode == pcf::Mode::None || mode == pcf::Mode::Hw2x2) return {};
     const std::vector<glm::vec2> unit = pcf::unitTapOffsets(mode, taps_());
-    std::vector<std::string> lines = {defineVec2Array("PCF_UNIT_TAPS", unit)};
-    if (mode == pcf::Mode::Grid)
-      lines.push_back(define("PCF_GRID_SIDE", pcf::gridSide(taps_()))[0]);
-    lines.push_back(
-        define("PCF_TAP_COUNT", static_cast<int>(unit.size()))[0]);  // what the report names
-    return lines;
+    // The tap count is what the report names; the grid's side is in its offsets' count.
+    return {defineVec2Array("PCF_UNIT_TAPS", unit),
+            define("PCF_TAP_COUNT", static_cast<int>(unit.size()))[0]};
   }
 
   // The kernel's penumbra matched where it matters most (pcf::areaLightRadius): the ray from

@@ -8,9 +8,9 @@ uniform sampler2DShadow uShadowMap;
 // PCF_EARLY_OUT 1: stop after 4 probe taps that agree. The kernel is compiled in too, so its
 // loops run to constants over constant offsets and unroll (a loop to a uniform count over a
 // uniform array cost the 3x3 grid about twice its lookups): PCF_TAP_COUNT offsets
-// PCF_UNIT_TAPS for a radius of one texel, in texels: grid, row by row (PCF_GRID_SIDE ^ 2);
-// dithered, 4 per pixel-parity pattern (pattern = x mod 2 + 2 (y mod 2)); poisson, the disk's
-// points in order.
+// PCF_UNIT_TAPS for a radius of one texel, in texels: grid, its four corners then the others
+// row by row; dithered, 4 per pixel-parity pattern (pattern = x mod 2 + 2 (y mod 2)); poisson,
+// the disk's points in order, the first four on its rim.
 #ifdef PCF_TAP_COUNT
 const vec2 kUnitTaps[PCF_TAP_COUNT] = PCF_UNIT_TAPS;
 #endif
@@ -44,34 +44,35 @@ float kernelTap(vec3 c, vec2 unitOffset) {
 }
 #endif
 
-// N x N taps at the midpoints of a box of half-width radius: the box filter's midpoint rule.
-#if PCF_MODE == PCF_MODE_GRID
-float pcfGrid(vec3 c) {
-  const int n = PCF_GRID_SIDE, last = n - 1;
+// The grid, N x N taps at the midpoints of a box of half-width radius (the box filter's
+// midpoint rule), and seed 003 slide 71's Poisson-disk samples (pcf_math.hpp poissonDisk:
+// each prefix is spread out): the average of PCF_TAP_COUNT taps. pcf_math.hpp puts the early
+// out's probes first in both, the grid's four corners and the disk's four rim points.
+#if PCF_MODE == PCF_MODE_GRID || PCF_MODE == PCF_MODE_POISSON
+float pcfKernel(vec3 c) {
+  const int n = PCF_TAP_COUNT;
   float sum = 0.0;
 #if PCF_EARLY_OUT == 1
-  if (n > 2) {
-    // The four corners first: if they agree, the neighbourhood is fully lit or fully shadowed
+  if (n > 4) {
+    // The four probes first: if they agree, the neighbourhood is fully lit or fully shadowed
     // (unless something smaller than the kernel hides between them) and the rest is skipped.
-    sum = kernelTap(c, kUnitTaps[0]) + kernelTap(c, kUnitTaps[last]) +
-          kernelTap(c, kUnitTaps[last * n]) + kernelTap(c, kUnitTaps[last * n + last]);
-    gStopped = sum == 0.0 || sum == 4.0;
-    // The rest one tap per turn of a loop that the probes start, not under an if: llvmpipe
-    // runs both sides of an if for every pixel of its SIMD vector, but leaves a loop once no
-    // pixel in it is still looping, so where all agreed the rest costs one empty turn.
-    for (int k = gStopped ? n * n : 0; k < n * n - 4; ++k) {
-      int at = k + 1;  // the k-th tap that is not a corner, row by row
-      if (at >= last) ++at;
-      if (at >= last * n) ++at;
-      sum += kernelTap(c, kUnitTaps[at]);
-    }
-    return gStopped ? sum * 0.25 : sum / float(n * n);
+    // llvmpipe runs both sides of an if for every pixel of its SIMD vector, so the rest is a
+    // loop, which it leaves once no pixel of the vector is still in it; but it runs a loop's
+    // body at least once, so the fourth probe is the loop's first turn: where all four agree
+    // the vector pays no turn beyond the probes (an empty turn cost about two taps).
+    for (int k = 0; k < 3; ++k) sum += kernelTap(c, kUnitTaps[k]);
+    // Always 3 (a tap is at most 1): a start the compiler cannot know keeps the loop a loop,
+    // where one of known length would be unrolled and every turn run.
+    int k = sum > 3.0 ? 4 : 3;
+    do {
+      sum += kernelTap(c, kUnitTaps[k]);
+      if (k == 3) gStopped = sum == 0.0 || sum == 4.0;
+    } while (++k < n && !gStopped);
+    return gStopped ? sum * 0.25 : sum / float(n);
   }
 #endif
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) sum += kernelTap(c, kUnitTaps[j * n + i]);
-  }
-  return sum / float(n * n);
+  for (int k = 0; k < n; ++k) sum += kernelTap(c, kUnitTaps[k]);
+  return sum / float(n);
 }
 #endif
 
@@ -92,33 +93,12 @@ float pcfDithered(vec3 c) {
 }
 #endif
 
-// Seed 003 slide 71: Poisson-disk samples (pcf_math.hpp poissonDisk: each prefix is spread
-// out, the first four on the rim so they double as the early-out probes).
-#if PCF_MODE == PCF_MODE_POISSON
-float pcfPoisson(vec3 c) {
-  const int n = PCF_TAP_COUNT;
-  float sum = 0.0;
-#if PCF_EARLY_OUT == 1
-  if (n > 4) {
-    for (int k = 0; k < 4; ++k) sum += kernelTap(c, kUnitTaps[k]);
-    gStopped = sum == 0.0 || sum == 4.0;
-    for (int k = gStopped ? n : 4; k < n; ++k) sum += kernelTap(c, kUnitTaps[k]);  // as the grid
-    return gStopped ? sum * 0.25 : sum / float(n);
-  }
-#endif
-  for (int k = 0; k < n; ++k) sum += kernelTap(c, kUnitTaps[k]);
-  return sum / float(n);
-}
-#endif
-
 // c: (s, t, r) after the divide by q.
 float percentageCloser(vec3 c) {
-#if PCF_MODE == PCF_MODE_GRID
-  return pcfGrid(c);
+#if PCF_MODE == PCF_MODE_GRID || PCF_MODE == PCF_MODE_POISSON
+  return pcfKernel(c);
 #elif PCF_MODE == PCF_MODE_DITHERED
   return pcfDithered(c);
-#elif PCF_MODE == PCF_MODE_POISSON
-  return pcfPoisson(c);
 #else
   return tap(c, vec2(0.0));  // none (nearest) or hw2x2 (the sampler is LINEAR: 4 texels, weighted)
 #endif

@@ -100,14 +100,32 @@ inline int gridSide(int taps) {
   return n;
 }
 
+// A grid's taps with its four corners first (the early out's probes, as the Poisson disk's
+// first four are on its rim), then the others row by row: the shader probes with the first
+// four of either kernel. A 2 x 2 grid is all corners, in its own order.
+inline std::vector<glm::vec2> cornersFirst(const std::vector<glm::vec2>& grid, int n) {
+  if (n <= 2) return grid;
+  const int last = n - 1;
+  const std::array<int, 4> corners = {0, last, last * n, last * n + last};
+  std::vector<glm::vec2> taps;
+  for (int k : corners) taps.push_back(grid[static_cast<size_t>(k)]);
+  for (int k = 0; k < n * n; ++k) {
+    if (std::find(corners.begin(), corners.end(), k) == corners.end()) {
+      taps.push_back(grid[static_cast<size_t>(k)]);
+    }
+  }
+  return taps;
+}
+
 // The kernel's offsets for a radius of one texel, which main.cpp compiles into pcf.glsl (as
-// PCF_UNIT_TAPS): grid, N x N row by row (N = gridSide(taps)); dithered, the four patterns of
-// ditheredOffsets one after another, pattern x + 2y for the pixel parity (x, y); poisson, the
-// first `taps` disk points (at least 4); none and hw2x2, the one tap at the centre.
+// PCF_UNIT_TAPS): grid, the N x N of gridOffsets (N = gridSide(taps)) corners first;
+// dithered, the four patterns of ditheredOffsets one after another, pattern x + 2y for the
+// pixel parity (x, y); poisson, the first `taps` disk points (at least 4); none and hw2x2,
+// the one tap at the centre.
 inline std::vector<glm::vec2> unitTapOffsets(Mode mode, int taps) {
   switch (mode) {
     case Mode::Grid:
-      return gridOffsets(gridSide(taps), 1.0f);
+      return cornersFirst(gridOffsets(gridSide(taps), 1.0f), gridSide(taps));
     case Mode::Dithered: {
       std::vector<glm::vec2> offsets;
       for (int y = 0; y < 2; ++y) {
@@ -129,7 +147,7 @@ inline std::vector<glm::vec2> unitTapOffsets(Mode mode, int taps) {
 
 // The offsets in texels a fragment's taps take: unitTapOffsets times the radius, one float
 // multiply each, as pcf.glsl computes them (for the grid and the disk the same floats as
-// gridOffsets(n, radius) and poissonDisk() * radius).
+// gridOffsets(n, radius), corners first, and poissonDisk() * radius).
 inline std::vector<glm::vec2> tapOffsets(Mode mode, int taps, float radius) {
   std::vector<glm::vec2> offsets = unitTapOffsets(mode, taps);
   for (glm::vec2& o : offsets) o *= radius;

@@ -75,8 +75,8 @@ TEST(PcfMath, TheFourDitheredPatternsOfA2x2BlockAreThe16TapGrid) {
 }
 
 TEST(PcfMath, TheShadersTapArrayHoldsEachKernelCentredInItsLayout) {
-  // pcf.glsl indexes the compiled offsets: grid row by row, dithered pattern x + 2y, poisson
-  // in disk order.
+  // pcf.glsl indexes the compiled offsets: grid corners first, then row by row; dithered
+  // pattern x + 2y; poisson in disk order.
   auto centre = [](const std::vector<glm::vec2>& taps) {
     glm::vec2 sum(0.0f);
     for (const auto& t : taps) sum += t;
@@ -84,9 +84,11 @@ TEST(PcfMath, TheShadersTapArrayHoldsEachKernelCentredInItsLayout) {
   };
   const auto grid = tapOffsets(Mode::Grid, 20, 3.0f);  // 4 x 4
   ASSERT_EQ(grid.size(), 16u);
-  EXPECT_EQ(grid, gridOffsets(4, 3.0f));
-  EXPECT_LT(grid[1].x - grid[0].x, 2.0f) << "row by row: x runs first";
-  EXPECT_EQ(grid[1].y, grid[0].y);
+  const auto rows = gridOffsets(4, 3.0f);
+  EXPECT_EQ(grid, cornersFirst(rows, 4));
+  EXPECT_EQ(grid[4], rows[1]) << "after the corners, row by row: x runs first";
+  EXPECT_EQ(grid[5], rows[2]);
+  EXPECT_EQ(grid[6], rows[4]);
   EXPECT_NEAR(glm::length(centre(grid)), 0.0f, 1e-5f);
   const auto dithered = tapOffsets(Mode::Dithered, 16, 3.0f);
   ASSERT_EQ(dithered.size(), 16u);
@@ -107,6 +109,33 @@ TEST(PcfMath, TheShadersTapArrayHoldsEachKernelCentredInItsLayout) {
   EXPECT_EQ(tapOffsets(Mode::Hw2x2, 64, 5.0f), std::vector<glm::vec2>{glm::vec2(0.0f)});
 }
 
+TEST(PcfMath, TheGridsFirstFourTapsAreItsCornersTheEarlyOutsProbes) {
+  // pcf.glsl probes with the first four compiled offsets (the grid's and the disk's alike):
+  // for the grid they must be its four corners, and every tap must still come exactly once.
+  for (int n = 3; n <= 8; ++n) {
+    const auto rows = gridOffsets(n, 1.0f);
+    const auto taps = unitTapOffsets(Mode::Grid, n * n);
+    ASSERT_EQ(taps.size(), rows.size()) << n;
+    // A corner: x and y each the smallest or the largest of the grid (the midpoints are not
+    // symmetric to the last bit, so no sign flip); the four all different.
+    const float low = rows.front().x, high = rows.back().x;
+    for (size_t k = 0; k < 4; ++k) {
+      EXPECT_TRUE(taps[k].x == low || taps[k].x == high) << n << " probe " << k;
+      EXPECT_TRUE(taps[k].y == low || taps[k].y == high) << n << " probe " << k;
+      for (size_t j = 0; j < k; ++j) EXPECT_NE(taps[j], taps[k]) << n << " probes " << j << k;
+    }
+    auto sorted = [](std::vector<glm::vec2> v) {
+      std::sort(v.begin(), v.end(), [](const glm::vec2& a, const glm::vec2& b) {
+        return a.x < b.x || (a.x == b.x && a.y < b.y);
+      });
+      return v;
+    };
+    EXPECT_EQ(sorted(taps), sorted(rows)) << n << ": the same taps, each once";
+  }
+  // 2 x 2 is all corners: its own order.
+  EXPECT_EQ(unitTapOffsets(Mode::Grid, 4), gridOffsets(2, 1.0f));
+}
+
 TEST(PcfMath, TheShaderScalesTheCompiledUnitOffsetsByTheRadiusAsTheCppDoes) {
   // pcf.glsl takes unitTapOffsets() as constants and multiplies each by the radius (one
   // rounding): the offsets of tapOffsets(), float for float, for any radius.
@@ -119,8 +148,9 @@ TEST(PcfMath, TheShaderScalesTheCompiledUnitOffsetsByTheRadiusAsTheCppDoes) {
       }
     }
   }
-  // The grid's and the disk's as they were before they were compiled in (uTaps, issue 20).
-  EXPECT_EQ(tapOffsets(Mode::Grid, 9, 2.3f), gridOffsets(3, 2.3f));
+  // The grid's and the disk's as they were before they were compiled in (uTaps, issue 20),
+  // the grid's corners first.
+  EXPECT_EQ(tapOffsets(Mode::Grid, 9, 2.3f), cornersFirst(gridOffsets(3, 2.3f), 3));
   EXPECT_EQ(tapOffsets(Mode::Poisson, 64, 2.3f)[63], poissonDisk()[63] * 2.3f);
   // Seed 001's dithered taps, (-1.5, 1.5) swidth + (x, -y) swidth with swidth = radius / 2:
   // the unit pattern is exact, so for a radius whose quarters are exact the seed's sums agree.
