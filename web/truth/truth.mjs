@@ -187,7 +187,7 @@ function countedPixel(job, i) {
 }
 
 // Truth::visibility: the fraction of the light each counted pixel's surface sees, for rows
-// [y0, y1) (the rest of `out` is left as it is).
+// [y0, y1) into `out`, which holds those rows only (pixel i at i - y0 * width).
 function visibility(job, unoccluded, out, y0, y1) {
   const light = job.light;
   const w = job.width, h = job.height;
@@ -207,13 +207,14 @@ function visibility(job, unoccluded, out, y0, y1) {
     if (!(dist > 0)) return true;
     return unoccluded(o, divide(d, dist), f(dist * ONE_SHORT));
   };
+  const base = y0 * w;
   for (let i = y0 * w; i < y1 * w; i++) {
     const c = countedPixel(job, i);
     if (!c) continue;
     const o = add(c.p, scale(c.n, offset));
     if (!area) {
-      if (light.directional) out[i] = unoccluded(o, minusAxis, Infinity) ? 1 : 0;
-      else out[i] = seesPoint(o, light.position) ? 1 : 0;
+      if (light.directional) out[i - base] = unoccluded(o, minusAxis, Infinity) ? 1 : 0;
+      else out[i - base] = seesPoint(o, light.position) ? 1 : 0;
       continue;
     }
     let centre = light.position, t = axisT, b = axisB;
@@ -223,7 +224,7 @@ function visibility(job, unoccluded, out, y0, y1) {
     } else if (axisZero) {
       const toP = sub(o, light.position);
       const len = length(toP);
-      if (!(len > 0)) { out[i] = 1; continue; }
+      if (!(len > 0)) { out[i - base] = 1; continue; }
       [t, b] = tangentFrame(divide(toP, len));
     }
     const seed = pixelSeed(i, 0x7f4a7c15);
@@ -240,7 +241,7 @@ function visibility(job, unoccluded, out, y0, y1) {
         if (lit) seen++;
       }
     }
-    out[i] = f(seen / count);
+    out[i - base] = f(seen / count);
   }
 }
 
@@ -274,13 +275,14 @@ function clipToFrustum(lvp, o, d, tmax) {
 }
 
 // Truth::airLight: single scattering along each pixel's eye ray, two interleaved halves, for
-// rows [y0, y1) into `light`; returns the sum of the halves' differences over lit pixels, and
+// rows [y0, y1) into `light`, which holds those rows only; returns the sum of the halves' differences over lit pixels, and
 // their count (the noise is their ratio over the whole picture).
 function airLight(job, unoccluded, light, y0, y1) {
   const air = job.air, w = job.width, h = job.height;
   const P = job.surfacePosition, N = job.surfaceNormal;
   const n = Math.max(2, Math.trunc(air.samples / 2) * 2);
-  const halfDifference = new Float32Array(w * h).fill(-1);
+  const base = y0 * w;
+  const halfDifference = new Float32Array(light.length).fill(-1);
   const minusDirection = air.lightDirection.map((x) => -x);
   for (let y = y0; y < y1; y++) {
     for (let x = 0; x < w; x++) {
@@ -314,13 +316,12 @@ function airLight(job, unoccluded, light, y0, y1) {
         half[k % 2] += spot;
       }
       const scaleFactor = (air.density * f(t1 - t0) * 2) / n;
-      light[i] = f(0.5 * scaleFactor * (half[0] + half[1]));
-      halfDifference[i] = f(0.5 * scaleFactor * Math.abs(half[0] - half[1]));
+      light[i - base] = f(0.5 * scaleFactor * (half[0] + half[1]));
+      halfDifference[i - base] = f(0.5 * scaleFactor * Math.abs(half[0] - half[1]));
     }
   }
   let sum = 0, lit = 0;
-  for (let i = y0 * w; i < y1 * w; i++) {
-    const v = halfDifference[i];
+  for (const v of halfDifference) {
     if (v < 0) continue;
     sum += v;
     lit++;
@@ -333,14 +334,13 @@ function airLight(job, unoccluded, light, y0, y1) {
 // tracer's layout (rows bottom-up, kNotCounted = -1).
 export function traceRows(job, y0, y1) {
   const { unoccluded } = sceneOf(job);
-  const w = job.width, h = job.height;
-  const vis = new Float32Array(w * h).fill(NOT_COUNTED);
-  visibility(job, unoccluded, vis, y0, y1);
-  const band = { visibility: vis.subarray(y0 * w, y1 * w), light: null, airSum: 0, airLit: 0 };
+  const pixels = (y1 - y0) * job.width;
+  const band = { visibility: new Float32Array(pixels).fill(NOT_COUNTED), light: null, airSum: 0, airLit: 0 };
+  visibility(job, unoccluded, band.visibility, y0, y1);
   if (job.air) {
-    const light = new Float32Array(w * h);
-    const { sum, lit } = airLight(job, unoccluded, light, y0, y1);
-    Object.assign(band, { light: light.subarray(y0 * w, y1 * w), airSum: sum, airLit: lit });
+    band.light = new Float32Array(pixels);
+    const { sum, lit } = airLight(job, unoccluded, band.light, y0, y1);
+    Object.assign(band, { airSum: sum, airLit: lit });
   }
   return band;
 }

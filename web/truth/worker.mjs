@@ -16,9 +16,6 @@ self.onmessage = (event) => {
     }
     if (message.generation !== generation) return;  // rows of a job since replaced
     const band = traceRows(job, message.y0, message.y1);
-    // Copies of the band alone (traceRows's arrays are the whole picture's size).
-    band.visibility = band.visibility.slice();
-    if (band.light) band.light = band.light.slice();
     self.postMessage({ generation, y0: message.y0, y1: message.y1, ...band },
                      [band.visibility.buffer, ...(band.light ? [band.light.buffer] : [])]);
   } catch (e) {
