@@ -1,6 +1,6 @@
 // ./run.sh web: serves the built pages on a local address and says where.
 //   node web/serve.mjs SITE_DIR [PORT]
-import { serve } from './tests/browser.mjs';
+import { serve } from './static_server.mjs';
 
 const [site, port = '8024'] = process.argv.slice(2);
 const server = await serve(site, Number(port));
