@@ -7,10 +7,13 @@
 //  - `..` in every spelling (`/../`, `%2e%2e`, `..%2f`, `..%5c`), and symbolic links inside the
 //    site to a file or folder outside it: never the file outside;
 //  - `/` and a folder serve their index.html as text/html, a folder without its slash is
-//    redirected to it; .html .js .mjs .wasm .md .png .json .css .data each get their type.
+//    redirected to it; .html .js .mjs .wasm .md .png .json .css .data each get their type;
+//  - the command line: a port that is no port (exit 2), a port in use (exit 1), no site or a
+//    folder without index.html (exit 2) each say so in one line, with no stack trace and no
+//    address announced.
 //
 //   node web/tests/server_test.mjs
-import { spawn } from 'node:child_process';
+import { spawn, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import http from 'node:http';
 import net from 'node:net';
@@ -154,6 +157,28 @@ for (const [file, type] of Object.entries(kTypes)) {
 const missing = await request(server, '/no_such_page.html');
 if (missing.status !== 404) fail(`GET /no_such_page.html: ${missing.status ?? missing.error}, not 404`);
 if (/URIError|Error:/.test(server.output)) fail(`the server printed an error: ${server.output.trim()}`);
+
+// ---------------------------------------------------------------- the command line
+// `args` must end at once with `status` and one line saying `says`, no address, no stack trace.
+function refuses(args, status, says, what) {
+  const r = spawnSync(process.execPath, [serveScript, ...args], { encoding: 'utf8', timeout: 10000 });
+  const lines = `${r.stdout}${r.stderr}`.split('\n').filter((l) => l.trim() !== '');
+  const shown = JSON.stringify(lines.slice(0, 3).join(' | ')).slice(0, 300);
+  if (r.error || r.signal) {
+    fail(`serve.mjs ${args.join(' ')} (${what}): still running after 10 s: ${shown}`);
+  } else if (r.status !== status || lines.length !== 1 || !says.test(lines[0]) ||
+             /lessons are at|^\s+at /m.test(`${r.stdout}${r.stderr}`)) {
+    fail(`serve.mjs ${args.join(' ')} (${what}): exit ${r.status} and ${lines.length} lines ${shown}; ` +
+         `expected exit ${status} and one line matching ${says}`);
+  }
+}
+refuses([site, 'abc'], 2, /abc/, 'a port that is no port');
+refuses([site, '70000'], 2, /70000/, 'a port above 65535');
+refuses([site, String(server.port)], 1, new RegExp(`${server.port}.*in use`), 'a port in use');
+refuses([path.join(tmp, 'no_such_site'), '0'], 2, /no_such_site/, 'no such site');
+fs.mkdirSync(path.join(tmp, 'empty'));
+refuses([path.join(tmp, 'empty'), '0'], 2, /index\.html/, 'a folder without index.html');
+refuses([], 2, /usage/, 'no arguments');
 
 server.proc.kill();
 fs.rmSync(tmp, { recursive: true, force: true });
