@@ -14,6 +14,13 @@
 #   gpu_check.sh, GPU.md
 #   glvnd/  (--glvnd) Debian's glvnd loader libraries, for a machine that has the driver's
 #           libEGL_nvidia but no libEGL.so.1; gpu_check.sh uses them only then
+#   .shadows_bundle  the marker: this folder is a bundle this script made, and every path
+#           it made in it
+#
+# --out DIR is replaced whole, so it must be a folder this script may delete: one that does not
+# exist yet, an empty one, or a bundle it made (its marker) holding nothing it did not make.
+# Anything else (an empty path, /, a folder of the user's, a bundle with the user's files put
+# into it, a link) is refused, exit 2, before anything is touched.
 #
 # OSMesa is not bundled: the lessons load it only for --backend osmesa, and it would bring
 # LLVM (~120 MB). --no-references skips the llvmpipe references (tests/bundle_test.sh needs
@@ -27,7 +34,11 @@ references=1
 glvnd=0
 while [ $# -gt 0 ]; do
   case $1 in
-    --build) build=$(cd "$2" && pwd); shift 2 ;;
+    --build | --out)
+      [ $# -ge 2 ] || { echo "bundle.sh: $1 needs a folder" >&2; exit 2; } ;;
+  esac
+  case $1 in
+    --build) build=$(cd "$2" && pwd) || exit 2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --no-references) references=0; shift ;;
     --short) references=short; shift ;;
@@ -37,14 +48,52 @@ while [ $# -gt 0 ]; do
   esac
 done
 
+# The folder the bundle replaces: never one holding anything this script did not make there.
+marker=.shadows_bundle
+making="shadows bundle: being made by scripts/bundle.sh"
+made="shadows bundle: made by scripts/bundle.sh, which replaces it whole; everything it made:"
+refuse() { echo "bundle.sh: --out '$out' $*; nothing was changed" >&2; exit 2; }
+while :; do  # a/b/ is a/b
+  case $out in
+    ?*/) out=${out%/} ;;
+    *) break ;;
+  esac
+done
+case $out in
+  '') refuse "is empty: give the folder to make the bundle in (default build/bundle)" ;;
+esac
+if [ -L "$out" ]; then
+  refuse "is a symbolic link: give the folder itself"
+elif [ -e "$out" ] && [ ! -d "$out" ]; then
+  refuse "exists and is not a folder"
+elif [ -d "$out" ]; then
+  [ "$(cd "$out" && pwd -P)" = / ] && refuse "is the root folder"
+  if [ -n "$(ls -A "$out")" ]; then
+    [ -f "$out/$marker" ] ||
+      refuse "is not empty and is not a bundle this script made (no $marker in it): move it away or give another folder"
+    # The first path in it that the bundle did not make: a finished bundle lists its own; one
+    # whose making stopped holds only the top-level names a bundle has.
+    foreign=$( (cd "$out" && find . -mindepth 1 | LC_ALL=C sort) |
+      awk -v made="$made" '
+        FNR == NR { if (FNR == 1) done = ($0 == made); else known[$0] = 1; next }
+        done && !($0 in known) { print; exit }
+        !done && $0 !~ /^\.\/(bin|lib|share|glvnd)(\/|$)/ &&
+          $0 !~ /^\.\/(gpu_check\.sh|GPU\.md|\.shadows_bundle)$/ { print; exit }' "$out/$marker" -)
+    [ -z "$foreign" ] ||
+      refuse "is a bundle, but ${foreign#./} in it is not the bundle's: move that away first"
+  fi
+fi
+
 programs="$build/shadows_lessons $build/bench/bench_sweep $build/tests/flavour_views"
 for p in $programs; do
   [ -x "$p" ] || { echo "bundle.sh: $p is not built (cmake --build build --target" \
                         "shadows_lessons bench_sweep flavour_views)" >&2; exit 1; }
 done
 
+# Checked above: nothing, an empty folder, or a bundle holding only what this script made.
 rm -rf "$out"
 mkdir -p "$out/bin" "$out/lib" "$out/share/shadows"
+echo "$making" > "$out/$marker"
 for p in $programs; do
   # Symbols stripped: 9 MB less, and a GPU check needs no debugger.
   strip -o "$out/bin/$(basename "$p")" "$p"
@@ -111,5 +160,9 @@ if [ $glvnd = 1 ]; then
   for deb in "$tmp"/*.deb; do dpkg-deb -x "$deb" "$out/glvnd"; done
   rm -rf "$tmp"
 fi
+
+# The marker, finished: every path in the bundle, so that the next run deletes only those.
+files=$(cd "$out" && find . -mindepth 1 | LC_ALL=C sort)
+printf '%s\n%s\n' "$made" "$files" > "$out/$marker"
 
 echo "bundle.sh: $out, $(du -sm "$out" | cut -f1) MiB"

@@ -11,6 +11,13 @@
 #   --backend NAME egl-device (default), or egl / osmesa where the machine has those
 #   --short        a few configurations at 160x120, one frame, one round: for testing the
 #                  script itself (tests/gpu_check_test.sh runs it so on llvmpipe)
+#
+# Exit 0: every step ran and nothing failed (a study or views cut short by their time limit
+# are named in the last line, not failures). Exit 1: something failed (a view or error number
+# outside the tolerance, a GL error, a program that did not run; the last line counts them,
+# summary.md says which); the output folder is complete either way. A case whose reference is
+# not in the bundle (bundle.sh --no-references, or --short's) is rendered and checked for GL
+# errors but not compared, and the check says so once.
 set -u
 
 bundle=$(cd "$(dirname "$0")" && pwd)
@@ -91,6 +98,18 @@ log "rendering on: $renderer ($vendor; $backend ${device_name:+device $device: $
 mkdir -p "$out/views"
 cases=$share/cases.txt
 [ $short = 1 ] && cases=$share/cases_short.txt
+# A case without its reference (a bundle made with --no-references, or --short's few) is
+# rendered and checked for GL errors, not compared: said once here, per case in its file.
+total=$(grep -c . "$cases")
+unreferenced=0
+while read -r lesson case sets; do
+  [ -d "$share/reference/$case" ] || unreferenced=$((unreferenced + 1))
+done < "$cases"
+if [ ! -d "$share/reference" ]; then
+  log "views: this bundle has no references (bundle.sh --no-references): the $total cases are rendered and checked for GL errors, not compared with llvmpipe"
+elif [ $unreferenced -gt 0 ]; then
+  log "views: $unreferenced of the $total cases have no reference in this bundle (bundle.sh --short?): those are rendered and checked for GL errors, not compared with llvmpipe"
+fi
 views_deadline=$(($(date +%s) + 130))
 while read -r lesson case sets; do
   left=$((views_deadline - $(date +%s)))
@@ -100,10 +119,19 @@ while read -r lesson case sets; do
   fi
   set_args=""
   for s in $sets; do set_args="$set_args --set $s"; done
+  reference="--reference $share/reference/$case"
+  [ -d "$share/reference/$case" ] || reference=""
   # shellcheck disable=SC2086
-  timeout $left "$bin/flavour_views" "$lesson" "$out/views/$case" --reference "$share/reference/$case" \
+  timeout $left "$bin/flavour_views" "$lesson" "$out/views/$case" $reference \
     $device_args --counters-differ $set_args > "$out/views/$case.txt" 2>&1
-  echo "exit $?" >> "$out/views/$case.txt"
+  status=$?
+  if [ -z "$reference" ]; then
+    echo "NOT COMPARED: no reference for $case in this bundle" >> "$out/views/$case.txt"
+    # Compared, the report's GL errors are checked against the reference's; here on their own.
+    [ $status = 0 ] && ! grep -q '"gl_errors": 0' "$out/views/$case/report.json" 2> /dev/null &&
+      echo "FAIL report: gl_errors not 0" >> "$out/views/$case.txt"
+  fi
+  echo "exit $status" >> "$out/views/$case.txt"
 done < "$cases"
 log "views: done at $(elapsed) s"
 
@@ -121,7 +149,14 @@ sweep() {  # sweep NAME LIMIT_S [bench_sweep flags]
   status=$?
   [ $status = 124 ] && echo "TIMEOUT after $limit s" >> "$out/bench/$name.log"
   log "bench $name: exit $status at $(elapsed) s"
+  case $status in
+    0) ;;
+    124) studies_timed_out="$studies_timed_out $name" ;;
+    *) studies_failed="$studies_failed $name" ;;
+  esac
 }
+studies_failed=""
+studies_timed_out=""
 mkdir -p "$out/bench"
 if [ $short = 1 ]; then
   # Google Benchmark's names: sweep/scene/axis:value/... (the last word of each parameter).
@@ -136,6 +171,34 @@ else
   sweep 07_multidigit_16bit 40
   sweep 08_atmospherics 50
 fi
+
+# ---------------------------------------------------------------- what failed
+# Every FAIL line of the views, a flavour_views that ended otherwise than by its verdict (a
+# crash, a bad case), and a study that did not finish for another reason than its time limit.
+failures=0
+failed_cases=""
+cut_short=""
+compared=0
+while read -r lesson case sets; do
+  f=$out/views/$case.txt
+  [ -f "$f" ] || continue
+  if grep -q '^SKIPPED' "$f" || grep -q '^exit 124$' "$f"; then
+    cut_short="$cut_short $case"
+  fi
+  grep -q '^NOT COMPARED' "$f" || grep -q '^SKIPPED' "$f" || compared=$((compared + 1))
+  n=$(grep -c '^FAIL' "$f")
+  grep -q '^exit \(0\|1\|124\)$' "$f" || grep -q '^SKIPPED' "$f" || n=$((n + 1))
+  if [ "$n" -gt 0 ]; then
+    failures=$((failures + n))
+    failed_cases="$failed_cases $case"
+    first=$(grep '^FAIL' "$f" | head -1 | sed 's/^FAIL //')
+    log "FAIL views $case: ${first:-$(tail -1 "$f")} ($n failures in views/$case.txt)"
+  fi
+done < "$cases"
+for name in $studies_failed; do
+  failures=$((failures + 1))
+  log "FAIL bench $name: $(grep -v '^ *$' "$out/bench/$name.log" | tail -1)"
+done
 
 # ---------------------------------------------------------------- summary.md
 # A CSV reader that knows quoted fields ("llvmpipe (LLVM 15.0.6, 256 bits)"); median of COLUMN
@@ -196,6 +259,15 @@ target_row() {  # target_row TEXT LIMIT GPU_RATIO LLVMPIPE_RATIO
   echo "$(elapsed) s in all$( [ $short = 1 ] && echo ' (--short: a few configurations, 160x120, numbers not comparable)')."
   echo "Every file named here is in this folder; docs/GPU.md (GPU.md in the bundle) explains them."
   echo
+  if [ $failures -gt 0 ]; then
+    echo "**Result: $failures failures** (views:${failed_cases:- none}; studies:${studies_failed:- none}); the log under Steps names each."
+  else
+    echo "**Result: no failures.**"
+  fi
+  [ $compared -lt "$total" ] &&
+    echo "$((total - compared)) of the $total cases were not compared with llvmpipe (no reference in the bundle, or out of time)."
+  [ -n "$studies_timed_out" ] && echo "Studies stopped at their time limit:$studies_timed_out (their rows read \"not measured\")."
+  echo
   echo "## Issue 10's targets (bench/shadow_cost.csv, bench/pcf_cost.csv)"
   echo
   echo "Medians over the presets (03) or per preset (05's eye pass); llvmpipe: the CSVs the README quotes."
@@ -240,6 +312,12 @@ target_row() {  # target_row TEXT LIMIT GPU_RATIO LLVMPIPE_RATIO
   while read -r lesson case sets; do
     f=$out/views/$case.txt
     [ -f "$f" ] || continue
+    if grep -q '^NOT COMPARED' "$f"; then
+      other=$(grep -c '^FAIL ' "$f")
+      grep -q '^exit 124$' "$f" && other="stopped (time)"
+      echo "| $case | not compared: no reference in the bundle | | | | $other |"
+      continue
+    fi
     views=$(grep -c '^view ' "$f")
     moved=$(grep -c '^FAIL .*pixels differ' "$f")
     worst=$(awk '/^view /{ n = $3 + 0; if (n > best) { best = n; w = $2 " " $3 " px, " $NF } }
@@ -288,4 +366,13 @@ target_row() {  # target_row TEXT LIMIT GPU_RATIO LLVMPIPE_RATIO
   echo
   sed 's/^/    /' "$out/log.txt"
 } > "$out/summary.md"
-log "gpu_check: $out/summary.md ($(elapsed) s)"
+# The last line: the verdict, what was not checked, where the rest is.
+also=""
+[ $compared -lt "$total" ] && also="$also; $((total - compared)) of $total cases not compared with llvmpipe"
+[ -n "$cut_short" ] && also="$also; views cut short by time:$cut_short"
+[ -n "$studies_timed_out" ] && also="$also; studies stopped at their limit:$studies_timed_out"
+if [ $failures -gt 0 ]; then
+  log "gpu_check: FAILED, $failures failures (views:${failed_cases:- none}; studies:${studies_failed:- none})$also; $out/summary.md ($(elapsed) s)"
+  exit 1
+fi
+log "gpu_check: passed, no failures$also; $out/summary.md ($(elapsed) s)"

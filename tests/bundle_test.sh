@@ -4,6 +4,10 @@
 # (glibc, GL/EGL); copied to a fresh folder with the source and build trees hidden (a private
 # mount namespace with empty folders over them), every lesson renders headless (EGL) with its
 # truth; and it reads its own shaders, not the source tree's (a broken copy makes it fail).
+# Its --out folder is replaced whole, so bundle.sh refuses, exit 2 in one line and touching
+# nothing, any folder it did not make (issue 31): an empty path, /, a file, a link, a folder
+# of the user's, and a bundle of its own into which the user put a file; it replaces a bundle
+# of its own (the marker .shadows_bundle says so).
 #
 #   tests/bundle_test.sh SOURCE_DIR BUILD_DIR
 set -u
@@ -14,7 +18,50 @@ trap 'rm -rf "$tmp"' EXIT
 failures=0
 fail() { echo "FAIL $*"; failures=$((failures + 1)); }
 
+# refuses WHAT BUILD_DIR OUT_DIR: bundle.sh --out OUT_DIR exits 2 with one line.
+refuses() {
+  what=$1
+  shift
+  "$src/scripts/bundle.sh" --build "$1" --out "$2" --no-references > "$tmp/refused.txt" 2>&1
+  status=$?
+  lines=$(grep -c . "$tmp/refused.txt")
+  if [ $status != 2 ] || [ "$lines" != 1 ]; then
+    fail "bundle.sh --out '$2' ($what): exit $status and $lines lines, not exit 2 and one line:"
+    head -5 "$tmp/refused.txt"
+  fi
+}
+# With a build folder holding no programs: the old script stopped there before writing into
+# /bin, /lib, /share (--out '') or deleting /; the refusal comes before it looks at the build.
+mkdir -p "$tmp/no_build"
+refuses "an empty path" "$tmp/no_build" ''
+refuses "the root folder" "$tmp/no_build" /
+refuses "the root folder, spelt //" "$tmp/no_build" //
+echo "a file" > "$tmp/a_file"
+refuses "a file" "$tmp/no_build" "$tmp/a_file"
+grep -q '^a file$' "$tmp/a_file" || fail "bundle.sh --out FILE changed the file"
+# A folder of the user's, with the real build: it was deleted, and the bundle made in it.
+mkdir -p "$tmp/notmine"
+echo precious > "$tmp/notmine/thesis.txt"
+refuses "a folder of the user's" "$build" "$tmp/notmine"
+left=$(cd "$tmp/notmine" && find . -mindepth 1 | head -3 | tr '\n' ' ')
+if [ "$left" != "./thesis.txt " ] || ! grep -q '^precious$' "$tmp/notmine/thesis.txt"; then
+  fail "bundle.sh --out a folder of the user's changed it: $left"
+fi
+ln -s notmine "$tmp/link"
+refuses "a link to a folder" "$build" "$tmp/link"
+[ -f "$tmp/notmine/thesis.txt" ] || fail "bundle.sh --out a link deleted what it points to"
+
 "$src/scripts/bundle.sh" --build "$build" --out "$tmp/made" --no-references || exit 1
+[ -f "$tmp/made/.shadows_bundle" ] || fail "the bundle has no marker (.shadows_bundle)"
+# Its own bundle with the user's results put in it: refused; without them: made again.
+mkdir -p "$tmp/made/gpu_check-results"
+echo "measured" > "$tmp/made/gpu_check-results/summary.md"
+refuses "a bundle holding the user's results" "$build" "$tmp/made"
+grep -q '^measured$' "$tmp/made/gpu_check-results/summary.md" ||
+  fail "bundle.sh --out a bundle deleted the user's results in it"
+rm -rf "$tmp/made/gpu_check-results"
+"$src/scripts/bundle.sh" --build "$build" --out "$tmp/made/" --no-references ||
+  fail "bundle.sh does not replace a bundle of its own"
 
 # At most 60 MiB (the files' own sizes; a link counts as its few bytes).
 bytes=$(du -sb "$tmp/made" | cut -f1)

@@ -12,7 +12,8 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
-import { launch, open, serve } from './tests/browser.mjs';
+import { serve } from './static_server.mjs';
+import { launch, open } from './tests/browser.mjs';
 
 const arg = (name, fallback) => {
   const i = process.argv.indexOf(name);

@@ -1,42 +1,11 @@
-// Headless Chromium driven over the DevTools protocol (a pipe: no npm package, no port), and a
-// static file server for the pages: what the browser tests and the web benchmark share.
+// Headless Chromium driven over the DevTools protocol (a pipe: no npm package, no port) and PNG
+// helpers: what the browser tests and the web benchmark share. The pages come from
+// web/static_server.mjs, the server `./run.sh web` gives a student.
 import { spawn } from 'node:child_process';
 import fs from 'node:fs';
-import http from 'node:http';
 import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
-
-const kTypes = {
-  '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm',
-  '.data': 'application/octet-stream', '.png': 'image/png', '.md': 'text/plain; charset=utf-8',
-  '.css': 'text/css', '.json': 'application/json', '.svg': 'image/svg+xml',
-};
-
-// Serves `root` on 127.0.0.1 (`port`, or a free one); resolves to { url, close() }. Paths
-// matching `hide` (a RegExp) are not found, as on a server missing those files.
-export function serve(root, port = 0, hide = null) {
-  const server = http.createServer((req, res) => {
-    const rel = decodeURIComponent(new URL(req.url, 'http://x').pathname);
-    const file = path.join(root, path.normalize(rel).replace(/^(\.\.[/\\])+/, ''));
-    fs.readFile(file.endsWith('/') ? file + 'index.html' : file, (err, data) => {
-      if (hide && hide.test(rel)) err = new Error('hidden');
-      if (err) {
-        res.writeHead(404);
-        res.end('not found');
-        return;
-      }
-      res.writeHead(200, { 'Content-Type': kTypes[path.extname(file)] || 'application/octet-stream' });
-      res.end(data);
-    });
-  });
-  return new Promise((resolve) => {
-    server.listen(port, '127.0.0.1', () => resolve({
-      url: `http://127.0.0.1:${server.address().port}/`,
-      close: () => new Promise((r) => server.close(r)),
-    }));
-  });
-}
 
 // Chromium, headless, WebGL 2 through SwiftShader; `extraFlags` e.g. '--disable-webgl2'.
 export async function launch(extraFlags = []) {

@@ -12,7 +12,8 @@
 import { execFileSync, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
-import { decodePng, launch, meanDifference, open, pixelsDiffering, serve, sideBySide } from './browser.mjs';
+import { decodePng, launch, meanDifference, open, pixelsDiffering, sideBySide } from './browser.mjs';
+import { serve } from '../static_server.mjs';
 
 const [lesson, site, native, outDir] = process.argv.slice(2);
 if (!outDir) {
