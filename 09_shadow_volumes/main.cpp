@@ -1,12 +1,12 @@
-// Lesson 09: Crow's shadow volumes with the stencil buffer (seed 003 slides 27-50, "Shadow
+// Lesson 09: Crow's shadow volumes with the stencil buffer (seed 003 slides 22-50, "Shadow
 // Volumes (Crow 1977)" to "Shadow Volume Issues"; seed 002 "additive light masking"; seed 000
 // "Hybrid of Shadow Volumes and Shadow Mapping").
 //
 //   1. The scene with the light dimmed; it also fills the depth buffer (slide 34).
 //   2. Clear the stencil, draw every caster's volume without colour or depth writes.
-//      z-pass: front faces that pass the depth test increment, back faces decrement.
-//      z-fail (Carmack's reverse): back faces that fail increment, front faces decrement; the
-//      volume then needs its light and dark caps (slides 39-46).
+//      z-pass: front faces that pass the depth test increment, then back faces decrement.
+//      z-fail (Carmack's reverse): back faces that fail increment first, then front faces
+//      decrement; the volume then needs its light and dark caps (slides 39-46).
 //   3. Light every pixel whose count is 0, blended additively.
 //
 // The volumes are extruded in the vertex shader to infinity (w = 0), so the eye's projection
@@ -34,7 +34,7 @@ class ShadowVolumes final : public Lesson {
     return "Shadow volumes: count the volume faces in front of each pixel in the stencil";
   }
   std::string seeds() const override {
-    return "seed 003: slides 27-50 (Shadow Volumes .. Shadow Volume Issues); seed 002: additive "
+    return "seed 003: slides 22-50 (Shadow Volumes .. Shadow Volume Issues); seed 002: additive "
            "light masking";
   }
   std::vector<std::string> debugViews() const override { return {"volumes", "count"}; }
@@ -66,8 +66,9 @@ class ShadowVolumes final : public Lesson {
     geometry_ = p.addChoice("volume.geometry", {"silhouette", "per_triangle"}, "silhouette",
                             "extrude only possible silhouette edges, or one volume per triangle");
     stencil_ = p.addChoice("stencil.mode", {"two_pass", "two_sided"}, "two_pass",
-                           "front and back faces in two culled passes, or one pass with "
-                           "glStencilOpSeparate");
+                           "the incrementing faces, then the decrementing ones, in two culled "
+                           "passes; or one pass with glStencilOpSeparate (wrap only: with clamp "
+                           "two passes)");
     wrap_ = p.addChoice("stencil.op", {"wrap", "clamp"}, "wrap",
                         "GL_INCR_WRAP/DECR_WRAP, or GL_INCR/DECR, which stop at 255 and 0");
     combine_ = p.addChoice("combine", {"additive", "modulative"}, "additive",
@@ -149,6 +150,11 @@ class ShadowVolumes final : public Lesson {
                        open_edges_ > 0 ? ": closed as two-sided shells: " : "",
                        open_names_.c_str());
     if (clamp_refused_) ImGui::TextWrapped("GL_DEPTH_CLAMP is not offered here: finite far");
+    if (stencil_() == Stencil::TwoSided && !two_sided_used_) {
+      ImGui::TextWrapped(
+          "two-sided stencil needs stencil.op=wrap (one pass has no fixed face "
+          "order): drawn in two passes");
+    }
   }
 
   void report(JsonWriter& json) const override {
@@ -156,6 +162,7 @@ class ShadowVolumes final : public Lesson {
     json.value("volume_open_casters", open_names_);
     json.value("eye_far_used", far_used_);  // 0: at infinity
     json.value("depth_clamp", depth_clamp_ ? 1 : 0);
+    json.value("stencil_passes", two_sided_used_ ? 1 : 2);
   }
 
  private:
@@ -356,12 +363,18 @@ class ShadowVolumes final : public Lesson {
     const Program& p = volume_programs_.get({f.viewDefines(), geometry_.defines()});
     p.use();
     p.set("uViewProjection", f.projection * f.view);
-    const bool two_sided = stencil_() == Stencil::TwoSided;
-    // Two passes (slide 34): front faces with the back ones culled, then the back faces.
-    for (const GLenum culled :
-         two_sided ? std::vector<GLenum>{GL_NONE} : std::vector<GLenum>{GL_BACK, GL_FRONT}) {
-      if (culled != GL_NONE) glEnable(GL_CULL_FACE), glCullFace(culled);
+    // Increments before decrements, in each method's own order: z-pass draws the front faces
+    // first (slide 34), z-fail the back faces (slide 39). With GL_INCR/GL_DECR (stencil.op=clamp)
+    // a decrement that came first would stop at 0 and be lost. Two-sided stencil draws both in
+    // one pass in no fixed order, which is why it came with EXT_stencil_wrap (slide 50): with
+    // clamp it runs as two passes.
+    two_sided_used_ = stencil_() == Stencil::TwoSided && wrap_() == 0;
+    if (!two_sided_used_) glEnable(GL_CULL_FACE);
+    for (int pass = 0; pass < (two_sided_used_ ? 1 : 2); ++pass) {
       for (const Draw& d : draws) {
+        // Pass 0 draws the incrementing faces: z-pass's front ones (the back culled), z-fail's
+        // back ones; pass 1 the decrementing ones.
+        if (!two_sided_used_) glCullFace((pass == 0) != d.zfail ? GL_BACK : GL_FRONT);
         const Ops ops = opsFor(d.zfail);
         glStencilOpSeparate(GL_FRONT, GL_KEEP, ops.fail_front, ops.pass_front);
         glStencilOpSeparate(GL_BACK, GL_KEEP, ops.fail_back, ops.pass_back);
@@ -392,22 +405,34 @@ class ShadowVolumes final : public Lesson {
     glBindVertexArray(0);
   }
 
-  // view=volumes (slide 28): the faces the stencil counted, translucent over the picture.
+  // view=volumes (slide 29, "render shadow volume faces"), translucent over the picture: the
+  // faces in front of the surfaces (what z-pass counts) strong, those behind them (what z-fail
+  // counts: most back faces end under the floor) faint; front faces warm, back faces cold.
   void drawVolumesSeen(Frame& f) {
+    buildVolumes(f);  // also with shadow.off, which counts none
     PassState state;
     state.depth_write = false;
     state.blend = true;
     state.blend_src = GL_SRC_ALPHA, state.blend_dst = GL_ONE_MINUS_SRC_ALPHA;
-    state.apply();
     depthClamp(depth_clamp_);
     const Program& p = volume_programs_.get({f.viewDefines(), geometry_.defines()});
     p.use();
     p.set("uViewProjection", f.projection * f.view);
     const Light& l = f.light;
-    for (size_t i = 0; i < f.scene.objects.size(); ++i) {
-      const SceneObject& o = f.scene.objects[i];
-      if (o.castsFrom(l.position, l.directional, l.direction)) {
-        drawVolume(f, p, i, method_() == Method::ZFail);
+    for (const auto& [depth_func, alpha] :
+         {std::pair<GLenum, float>{GL_GREATER, 0.1f}, {GL_LESS, 0.35f}}) {
+      state.depth_func = depth_func;
+      // Behind means clearly behind: a side leaving a silhouette edge lies nearly in its
+      // face's plane, and rounding (which differs between rasterizers) would decide.
+      state.polygon_offset = depth_func == GL_GREATER;
+      state.offset_factor = -2.0f, state.offset_units = -16.0f;
+      state.apply();
+      p.set("uAlpha", alpha);
+      for (size_t i = 0; i < f.scene.objects.size(); ++i) {
+        const SceneObject& o = f.scene.objects[i];
+        if (o.castsFrom(l.position, l.directional, l.direction)) {
+          drawVolume(f, p, i, method_() == Method::ZFail);
+        }
       }
     }
     depthClamp(false);
@@ -452,7 +477,7 @@ class ShadowVolumes final : public Lesson {
   std::vector<Volume> volumes_by_object_;
   std::string built_for_;
   float far_used_ = 0.0f;
-  bool depth_clamp_ = false, clamp_refused_ = false;
+  bool depth_clamp_ = false, clamp_refused_ = false, two_sided_used_ = false;
   long long volumes_ = 0, zfail_ = 0, culled_ = 0, triangles_ = 0, silhouettes_ = 0,
             open_edges_ = 0;
   std::string open_names_;

@@ -51,6 +51,64 @@ TEST(Lesson09, WeldingClosesTheSeamsAndNamesAnOpenMesh) {
   EXPECT_EQ(plane.edges.size(), 5u + 1u) << "two triangles and their reversed copies";
 }
 
+TEST(Lesson09, VolumeCountersAreWhatOneCountsByHandOnACubeAPyramidAndAnOpenQuad) {
+  // volumeWork's silhouette edges and triangles (the report's counters) on meshes whose
+  // answer a student counts on paper: sides are 2 triangles per silhouette edge; z-fail adds
+  // the lit triangles (light cap) and the unlit ones (dark cap).
+  struct Case {
+    const char* what;
+    MeshData mesh;
+    glm::vec4 light;  // in the mesh's space: (position, 1) or (-direction, 0)
+    long long silhouettes, lit, unlit;
+  };
+  const std::vector<Case> cases = {
+      // The unit cube lit from straight above: the top's two triangles lit, its 4 rim edges.
+      {"cube, light above", makeBox({1, 1, 1}), {0, 10, 0, 1}, 4, 2, 10},
+      // From a corner's side (x, y, z > 1): three faces lit, the silhouette a hexagon.
+      {"cube, light off a corner", makeBox({1, 1, 1}), {10, 9, 8, 1}, 6, 6, 6},
+      // A directional light along -y: the same as from above.
+      {"cube, sun overhead", makeBox({1, 1, 1}), {0, 1, 0, 0}, 4, 2, 10},
+      // The square pyramid lit from above its apex: its 4 sides lit, the base's 4 edges.
+      {"pyramid, light above", makePyramid(0.8f, 1.6f), {0, 10, 0, 1}, 4, 4, 2},
+      // Lit from below: only the base (2 triangles); its rim again.
+      {"pyramid, light below", makePyramid(0.8f, 1.6f), {0, -10, 0, 1}, 4, 2, 4},
+      // An open quad, made a two-sided shell: the top copy lit, the reversed one not, and
+      // the rim (4 edges, each between a lit and an unlit copy) is the silhouette.
+      {"open quad", makePlane(1, 1), {0.2f, 5, 0.1f, 1}, 4, 2, 2},
+  };
+  for (const Case& c : cases) {
+    const EdgeMesh m = buildEdgeMesh(c.mesh);
+    const VolumeWork sides = volumeWork(m, VolumeGeometry::Silhouette, c.light, false, false);
+    EXPECT_EQ(sides.silhouette_edges, c.silhouettes) << c.what;
+    EXPECT_EQ(sides.triangles, 2 * c.silhouettes) << c.what;
+    const VolumeWork capped = volumeWork(m, VolumeGeometry::Silhouette, c.light, true, true);
+    EXPECT_EQ(capped.triangles, 2 * c.silhouettes + c.lit + c.unlit) << c.what;
+    EXPECT_EQ(volumeWork(m, VolumeGeometry::Silhouette, c.light, true, false).triangles,
+              2 * c.silhouettes + c.lit)
+        << c.what;
+    // One prism per lit triangle: 3 edges, 6 side triangles, and its own two caps.
+    const VolumeWork prisms = volumeWork(m, VolumeGeometry::PerTriangle, c.light, true, true);
+    EXPECT_EQ(prisms.silhouette_edges, 3 * c.lit) << c.what;
+    EXPECT_EQ(prisms.triangles, 8 * c.lit) << c.what;
+  }
+}
+
+TEST(Lesson09, TheReportsCountersAddUpAsTheClosedFormsSayOnTheCubesPreset) {
+  // On `cubes` every caster is a box (12 triangles, none dropped by welding): z-pass draws 2
+  // side triangles per silhouette edge; z-fail adds both caps, every triangle of every box.
+  for (const std::string method : {"zpass", "zfail"}) {
+    auto runner = startLesson(kLesson, {"scene=cubes", "volume.method=" + method}, 64, 48);
+    runner->renderFrame();
+    const long long volumes = counter(*runner, "volumes_drawn");
+    const long long silhouettes = counter(*runner, "silhouette_edges");
+    EXPECT_GE(volumes, 3) << method;
+    EXPECT_GE(silhouettes, 4 * volumes) << method << ": a box's silhouette has 4 edges or more";
+    EXPECT_EQ(counter(*runner, "volume_triangles"),
+              2 * silhouettes + (method == "zfail" ? 12 * volumes : 0))
+        << method;
+  }
+}
+
 TEST(Lesson09, AutoAndZFailWithCapsMatchTheTruthOnEveryPreset) {
   // Exact up to rasterization at the shadow edges: bound 0.05 % of the counted pixels.
   auto probe = startLesson(kLesson, {}, 8, 8);
@@ -137,6 +195,41 @@ TEST(Lesson09, MoreThan255VolumesBreakTheClampingOpsNotTheWrappingOnes) {
   EXPECT_LE(wrongPct(wrap), 0.05);
 }
 
+TEST(Lesson09, ClampingOpsCountWhatWrappingOnesCountBelow256Volumes) {
+  // Slide 39's order (z-fail: back faces increment first) and slide 34's (z-pass: front faces
+  // first): a clamped count never dips below 0, so below 255 overlapping volumes GL_INCR/DECR
+  // give the wrapping ops' shadow exactly, for each method and in one two-sided pass too.
+  for (const std::string scene : {"torus_pyramid", "cubes", "dueling", "grazing"}) {
+    for (const std::string method : {"zpass", "zfail", "auto"}) {
+      for (const std::string mode : {"two_pass", "two_sided"}) {
+        const std::vector<std::string> sets = {"scene=" + scene, "volume.method=" + method,
+                                               "stencil.mode=" + mode};
+        std::vector<std::string> clamp = sets, wrap = sets;
+        clamp.push_back("stencil.op=clamp");
+        wrap.push_back("stencil.op=wrap");
+        auto runner = startLesson(kLesson, clamp, 160, 120);
+        const std::vector<float> clamped = runner->renderVisibility();
+        EXPECT_EQ(reportNumber(*runner, "stencil_passes"), 2) << label(clamp);
+        runner.reset();  // one GL context at a time
+        runner = startLesson(kLesson, wrap, 160, 120);
+        EXPECT_EQ(testing::valuesDiffering(clamped, runner->renderVisibility()), 0u)
+            << label(clamp);
+      }
+    }
+  }
+  EXPECT_LE(wrongPct(measured({"volume.method=zfail", "stencil.op=clamp"})), 0.05);
+}
+
+TEST(Lesson09, TwoSidedStencilIsOnePassWithWrappingOps) {
+  auto runner = startLesson(kLesson, {"stencil.mode=two_sided"}, 64, 48);
+  runner->renderFrame();
+  EXPECT_EQ(reportNumber(*runner, "stencil_passes"), 1);
+  runner.reset();
+  runner = startLesson(kLesson, {"stencil.mode=two_pass"}, 64, 48);
+  runner->renderFrame();
+  EXPECT_EQ(reportNumber(*runner, "stencil_passes"), 2);
+}
+
 // The picture and the shadow term of one setting (one GL context at a time).
 std::pair<Image, std::vector<float>> pictureAndVisibility(const std::vector<std::string>& sets) {
   auto runner = startLesson(kLesson, sets);
@@ -145,6 +238,20 @@ std::pair<Image, std::vector<float>> pictureAndVisibility(const std::vector<std:
   std::vector<float> visibility = runner->renderVisibility();
   EXPECT_EQ(runner->glErrors(), 0) << label(sets);
   return {std::move(image), std::move(visibility)};
+}
+
+TEST(Lesson09, TheVolumesViewShowsTheVolumesAlsoWithShadowOff) {
+  // The volumes are never counted with shadow.off; the view builds them to show them anyway.
+  const auto volumes_view = [](const std::string& off) {
+    auto runner = startLesson(kLesson, {"view=volumes", "shadow.off=" + off}, 160, 120);
+    runner->renderFrame();
+    EXPECT_EQ(runner->glErrors(), 0) << off;
+    return runner->readImage();
+  };
+  const Image off = volumes_view("true");
+  const Image plain = pictureAndVisibility({"shadow.off=true"}).first;
+  EXPECT_GT(testing::pixelsDiffering(off, plain, 8), 2000u) << "volumes drawn";
+  EXPECT_GT(testing::pixelsDiffering(off, volumes_view("false"), 8), 0u) << "everything lit";
 }
 
 TEST(Lesson09, TwoSidedStencilCountsWhatTwoPassesCount) {
