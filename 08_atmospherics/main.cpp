@@ -188,7 +188,7 @@ class Atmospherics final : public Lesson {
     near_ = 1e30f, far_ = 0.0f;
     for (const glm::vec3& p : points) near_ = std::min(near_, -p.z), far_ = std::max(far_, -p.z);
     near_ = std::max(near_, f.scene.camera.near);  // what the eye pass can show
-    far_ = std::min(far_, f.scene.camera.far);
+    far_ = std::min(far_, f.scene.eyeFar(f.eye));
     step_ = far_ > near_ ? (far_ - near_) / static_cast<float>(count) : 0.0f;
     rects_.assign(static_cast<size_t>(count), glm::vec4(-1.0f, -1.0f, 1.0f, 1.0f));
     if (!bound_()) return;
@@ -287,7 +287,7 @@ class Atmospherics final : public Lesson {
     auto timing = f.measure.pass("air_depth");
     ensureLowRes(f, k);
     const glm::mat4 view_projection = f.projection * f.view;
-    const glm::vec2 near_far(f.scene.camera.near, f.scene.camera.far);
+    const glm::vec2 near_far(f.scene.camera.near, f.scene.eyeFar(f.eye));
     PassState{}.apply();
     if (depthAware) {
       low_->depth_target.bind();
@@ -326,7 +326,7 @@ class Atmospherics final : public Lesson {
     program.set("uAir", 2);
     program.set("uDepth", 3);
     program.set("uFactor", k);
-    program.set("uNearFar", glm::vec2(f.scene.camera.near, f.scene.camera.far));
+    program.set("uNearFar", glm::vec2(f.scene.camera.near, f.scene.eyeFar(f.eye)));
     if (scissorToSlices(f)) drawTriangle(program);
     glDisable(GL_SCISSOR_TEST);
     PassState{}.apply();

@@ -184,6 +184,12 @@ Light Runner::currentLight() const {
   return l;
 }
 
+std::string Runner::lightOnSurface() const {
+  const Light l = currentLight();
+  if (l.directional) return {};
+  return scene_.surfaceAt(l.position, 1e-5f * std::max(scene_.bounds().radius(), 1.0f));
+}
+
 void Runner::initHeadless() {
   gpu_ = std::make_unique<Gpu>();
   gpu_->context = createHeadlessContext(
@@ -398,7 +404,7 @@ glm::mat4 Runner::cameraView() const {
 glm::mat4 Runner::cameraProjection(int width, int height) const {
   const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
   return glm::perspective(glm::radians(params_.at("camera.fov").f()), aspect, scene_.camera.near,
-                          scene_.camera.far);
+                          scene_.eyeFar(params_.at("camera.pos").v()));
 }
 
 void Runner::showImage(const Frame& frame, const Image& image) {

@@ -301,6 +301,9 @@ class Runner {
   static void resetGlState();
   void loadScene();
   Light currentLight() const;
+  // The object a point light sits on (within 1e-5 of the scene's radius), or "": the report's
+  // light_on_surface and the panel's warning.
+  std::string lightOnSurface() const;
   std::string errorKey() const;
   void saveScreenshot(int width, int height, const std::string& file);
   // The picture (to `out`) and the --report, --truth-out, --error-out asked for, all or none;

@@ -243,6 +243,13 @@ Runner::TruthResult Runner::traceTruth(TruthInputs in) {
   m.covered_pixels =
       std::count_if(job.surface.normal.begin(), job.surface.normal.end(),
                     [](const glm::vec4& normal) { return glm::dot(normal, normal) > 0.0f; });
+  for (size_t i = 0; i < job.surface.position.size(); ++i) {
+    glm::vec3 p, normal;
+    float ndotl = 0.0f;  // set only where a surface faces some way
+    if (!countedPixel(job.surface, i, job.light, p, normal, ndotl) && ndotl > 0.0f) {
+      ++m.grazing_pixels;
+    }
+  }
   m.truth = in.truth_name;
   // Non-finite pixels: where the visibility or any channel of the shaded picture is NaN or
   // Inf, each pixel counted once.

@@ -50,6 +50,11 @@ ErrorMetrics compareVisibility(const std::vector<float>& rendered, const std::ve
   return m;
 }
 
+std::string notCountedReason(const ErrorMetrics& m) {
+  return m.covered_pixels == 0 ? "no pixel shows a surface: the eye sees only sky"
+                               : "no surface seen faces the light inside its frustum";
+}
+
 ErrorMetrics compareVisibilityIn(const ErrorPixels& pixels,
                                  const std::function<bool(glm::vec4 position)>& inside) {
   if (pixels.position.size() != pixels.truth.size()) {

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,6 +11,9 @@
 #include "text.hpp"
 
 namespace shadows {
+
+// A figure over no pixel: NaN, which a report writes as null (never a zero that reads "none").
+inline constexpr double kNoFigure = std::numeric_limits<double>::quiet_NaN();
 
 class JsonWriter {
  public:

@@ -49,6 +49,7 @@ void Runner::writeReport(JsonWriter& json) {
   json.endArray();
   json.value("frames", options_.frames);
   params_.writeJson(json);
+  json.value("light_on_surface", lightOnSurface());
   json.value("frame_ms", measure_->medianFrameMs());
   // What the shadow costs: the same frame with shadow.off, timed in the same run.
   if (baseline_measure_ && baseline_measure_->timedFrames() > 0) {
@@ -90,19 +91,23 @@ void Runner::writeReport(JsonWriter& json) {
   if (texels) {
     const TexelStats& t = *texel_stats_;
     writeTexelsPerPixel(json, t);
-    json.value("undersampled_pct", t.undersampled_pct);
+    json.value("undersampled_pct", t.pixels > 0 ? t.undersampled_pct : kNoFigure);
   }
   if (error_.valid) {
     const ErrorMetrics& e = error_.metrics;
     json.beginObject("error");
     json.value("truth", e.truth);
-    json.value("false_shadow_pct", e.false_shadow_pct);
-    json.value("false_lit_pct", e.false_lit_pct);
-    json.value("vis_mae", e.vis_mae);
-    json.value("shade_mae", e.shade_mae);
+    // A share of no pixel is no figure: null, and why (a zero would read as "no error").
+    const bool counted = e.counted_pixels > 0;
+    json.value("false_shadow_pct", counted ? e.false_shadow_pct : kNoFigure);
+    json.value("false_lit_pct", counted ? e.false_lit_pct : kNoFigure);
+    json.value("vis_mae", counted ? e.vis_mae : kNoFigure);
+    json.value("shade_mae", counted ? e.shade_mae : kNoFigure);
+    if (!counted) json.value("not_counted", notCountedReason(e));
     json.value("nonfinite_pixels", e.nonfinite_pixels);
     json.value("counted_pixels", e.counted_pixels);
     json.value("covered_pixels", e.covered_pixels);
+    json.value("grazing_pixels", e.grazing_pixels);
     if (e.air.valid) {
       json.value("air_mae", e.air.mae);
       json.value("air_rel_rmse", e.air.rel_rmse);
@@ -120,8 +125,8 @@ void Runner::writeReport(JsonWriter& json) {
         const ErrorMetrics r = compareVisibilityIn(*error_.pixels, region.inside);
         json.beginObject(region.name);
         json.value("counted_pixels", r.counted_pixels);
-        json.value("false_shadow_pct", r.false_shadow_pct);
-        json.value("false_lit_pct", r.false_lit_pct);
+        json.value("false_shadow_pct", r.counted_pixels > 0 ? r.false_shadow_pct : kNoFigure);
+        json.value("false_lit_pct", r.counted_pixels > 0 ? r.false_lit_pct : kNoFigure);
         json.endObject();
       }
     }
@@ -237,7 +242,9 @@ int Runner::runHeadless() {
   if (const double overhead = shadowOverhead(); overhead > 0.0) {
     std::printf(", %.2fx without shadow", overhead);
   }
-  if (error_.valid) {
+  if (error_.valid && error_.metrics.counted_pixels == 0) {
+    std::printf("  error: none counted (%s)", notCountedReason(error_.metrics).c_str());
+  } else if (error_.valid) {
     std::printf("  false shadow %6.2f%%  false lit %5.2f%%", error_.metrics.false_shadow_pct,
                 error_.metrics.false_lit_pct);
   }

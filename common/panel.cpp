@@ -155,14 +155,31 @@ void Runner::drawPanel(Frame& frame) {
   ImGui::PopStyleColor();
   // The two answers every lesson gives, where no scrolling hides them: how wrong, what it costs.
   if (options_.truth) {
-    if (error_.valid) {
+    if (error_.valid && error_.metrics.counted_pixels == 0) {
+      ImGui::TextWrapped("error: none counted (%s)", notCountedReason(error_.metrics).c_str());
+    } else if (error_.valid) {
       ImGui::TextWrapped("error: false shadow %.2f%%, false lit %.2f%%",
                          error_.metrics.false_shadow_pct, error_.metrics.false_lit_pct);
     } else {
       ImGui::TextDisabled("error: measuring...");
     }
   }
-  if (texel_stats_) {
+  // Where no technique's answer is defined, the panel says so before its numbers.
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.2f, 1.0f));
+  if (const std::string on = lightOnSurface(); !on.empty()) {
+    ImGui::TextWrapped(
+        "the light sits on the %s's surface: its faces there lie edge-on to it, "
+        "and shadows near it are undefined",
+        on.c_str());
+  }
+  if (error_.valid && error_.metrics.grazing_pixels > error_.metrics.counted_pixels) {
+    ImGui::TextWrapped("the light grazes most surfaces seen (N.L < %g): those are not counted",
+                       static_cast<double>(kGrazingNdotL));
+  }
+  ImGui::PopStyleColor();
+  if (texel_stats_ && texel_stats_->pixels == 0) {
+    ImGui::TextWrapped("texels per pixel: none counted (no pixel seen lies in the map)");
+  } else if (texel_stats_) {
     ImGui::TextWrapped("texels per pixel: median %.2f (least axis), %.1f%% under-sampled%s",
                        texel_stats_->min_axis.median, texel_stats_->undersampled_pct,
                        texel_key_ == errorKey() ? "" : " (stale)");
@@ -216,15 +233,15 @@ void Runner::drawPanel(Frame& frame) {
     }
     if (error_.valid) {
       const ErrorMetrics& e = error_.metrics;
-      ImGui::TextWrapped("false shadow %.3f%%  false lit %.3f%%", e.false_shadow_pct,
-                         e.false_lit_pct);
-      ImGui::TextWrapped("vis_mae %.4f  non-finite %lld  counted %lld%s", e.vis_mae,
-                         e.nonfinite_pixels, e.counted_pixels,
-                         error_key_ == errorKey() ? "" : "  (stale: updating)");
       if (e.counted_pixels == 0) {
-        ImGui::TextWrapped(
-            "No pixel counted: no lit surface faces the eye in the light's "
-            "frustum (is the eye inside an object?)");
+        ImGui::TextWrapped("No pixel counted: %s (is the eye inside an object?)",
+                           notCountedReason(e).c_str());
+      } else {
+        ImGui::TextWrapped("false shadow %.3f%%  false lit %.3f%%", e.false_shadow_pct,
+                           e.false_lit_pct);
+        ImGui::TextWrapped("vis_mae %.4f  non-finite %lld  counted %lld%s", e.vis_mae,
+                           e.nonfinite_pixels, e.counted_pixels,
+                           error_key_ == errorKey() ? "" : "  (stale: updating)");
       }
       if (e.air.valid && !e.air.note.empty()) {
         ImGui::TextWrapped("air: 0 (%s)", e.air.note.c_str());

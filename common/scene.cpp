@@ -134,6 +134,59 @@ Bounds Scene::bounds(bool castersOnly) const {
   return b;
 }
 
+float Scene::eyeFar(glm::vec3 eye) const {
+  const Bounds b = bounds();
+  if (b.empty()) return camera.far;
+  return std::max(camera.far, 1.01f * (glm::distance(eye, b.center()) + b.radius()));
+}
+
+namespace {
+
+// The distance from p to the triangle abc (Ericson, Real-Time Collision Detection, 5.1.5).
+float distanceToTriangle(glm::vec3 p, glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+  const glm::vec3 ab = b - a, ac = c - a, ap = p - a;
+  const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+  if (d1 <= 0.0f && d2 <= 0.0f) return glm::distance(p, a);
+  const glm::vec3 bp = p - b;
+  const float d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+  if (d3 >= 0.0f && d4 <= d3) return glm::distance(p, b);
+  const float vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0f && d1 >= 0.0f && d3 <= 0.0f) return glm::distance(p, a + ab * (d1 / (d1 - d3)));
+  const glm::vec3 cp = p - c;
+  const float d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+  if (d6 >= 0.0f && d5 <= d6) return glm::distance(p, c);
+  const float vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0f && d2 >= 0.0f && d6 <= 0.0f) return glm::distance(p, a + ac * (d2 / (d2 - d6)));
+  const float va = d3 * d6 - d5 * d4;
+  if (va <= 0.0f && d4 - d3 >= 0.0f && d5 - d6 >= 0.0f) {
+    return glm::distance(p, b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))));
+  }
+  const float denom = va + vb + vc;
+  if (!(denom > 0.0f)) return glm::distance(p, a);  // a sliver: its corner will do
+  return glm::distance(p, a + ab * (vb / denom) + ac * (vc / denom));
+}
+
+}  // namespace
+
+std::string Scene::surfaceAt(glm::vec3 p, float tolerance) const {
+  for (const SceneObject& o : objects) {
+    const Bounds b = o.worldBounds();
+    if (glm::any(glm::lessThan(p, b.min - tolerance)) ||
+        glm::any(glm::greaterThan(p, b.max + tolerance))) {
+      continue;
+    }
+    const auto world = [&](std::uint32_t i) {
+      return glm::vec3(o.model * glm::vec4(o.mesh.vertices[i].position, 1.0f));
+    };
+    for (size_t t = 0; t + 2 < o.mesh.indices.size(); t += 3) {
+      const glm::vec3 a = world(o.mesh.indices[t]), bb = world(o.mesh.indices[t + 1]),
+                      c = world(o.mesh.indices[t + 2]);
+      if (distanceToTriangle(p, a, bb, c) <= tolerance) return o.name;
+    }
+  }
+  return {};
+}
+
 void Scene::worldTriangles(std::vector<glm::vec3>& positions,
                            std::vector<glm::uvec3>& triangles) const {
   positions.clear();

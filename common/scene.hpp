@@ -79,6 +79,12 @@ struct Scene {
   LightSetup light;
   CameraSetup camera;
   Bounds bounds(bool castersOnly = false) const;
+  // The eye's far plane from `eye`: camera.far, or further where the whole scene would not
+  // fit (camera.pos reaches 100 along each axis, so 173 from the centre).
+  float eyeFar(glm::vec3 eye) const;
+  // The object whose surface passes within `tolerance` of `p` ("" for none): a point light
+  // there lies in the plane of the faces around it, and no technique's answer is defined.
+  std::string surfaceAt(glm::vec3 p, float tolerance) const;
   // The bounds of what casts a shadow from this light (SceneObject::castsFrom).
   Bounds casterBounds(glm::vec3 lightPosition, bool directional, glm::vec3 lightDirection) const;
   // All triangles in world space, in object order (the truth's input).

@@ -51,11 +51,14 @@ TexelStats texelStats(const std::vector<TexelPixel>& pixels, std::optional<int> 
 void writeTexelsPerPixel(JsonWriter& json, const TexelStats& t) {
   json.beginObject("texels_per_pixel");
   json.value("pixels", t.pixels);
+  // Percentiles of no pixel are null (JsonWriter writes NaN so), and the note says why.
+  if (t.pixels == 0) json.value("not_counted", "no pixel seen lies in the shadow map");
+  const auto figure = [&](float v) { return t.pixels > 0 ? static_cast<double>(v) : kNoFigure; };
   for (const auto& [name, axis] : {std::pair{"min_axis", t.min_axis}, {"max_axis", t.max_axis}}) {
     json.beginObject(name);
-    json.value("median", static_cast<double>(axis.median));
-    json.value("p5", static_cast<double>(axis.p5));
-    json.value("p95", static_cast<double>(axis.p95));
+    json.value("median", figure(axis.median));
+    json.value("p5", figure(axis.p5));
+    json.value("p95", figure(axis.p95));
     json.endObject();
   }
   json.endObject();

@@ -49,7 +49,14 @@ struct AirMedium {
 // The single definition of a counted pixel (truth_job.cpp), shared by every tracer and by
 // facingWeight() so their masks agree exactly: a surface (position.w >= 0: the geometry pass
 // already left out what lies outside the light's frustum), finite, whose normal faces the
-// light (N.L > 0). Outputs the surface point, unit normal and N.L.
+// light by more than a graze (N.L >= kGrazingNdotL). Outputs the surface point, unit normal
+// and N.L.
+//
+// Below that N.L (the light within 0.06 degrees of the surface's plane: a directional light
+// level with the floor, a point light in a face's plane) lit or not is decided by the rounding
+// of the light's direction, not by any technique (docs/CONTRACTS.md). Steeper grazes stay
+// counted: lesson 04's acne lives there.
+inline constexpr float kGrazingNdotL = 0.001f;
 bool countedPixel(const SurfaceBuffer& s, std::size_t i, const TruthLight& light, glm::vec3& p,
                   glm::vec3& n, float& ndotl);
 
@@ -124,8 +131,14 @@ struct ErrorMetrics {
   // Pixels that show any surface (the sky excluded), counted or not: what an eye pass with no
   // overdraw would shade (the report's fragments_passed is measured against it).
   long long covered_pixels = 0;
+  // Pixels whose surface faces the light only at a graze (0 < N.L < kGrazingNdotL): shown,
+  // not counted.
+  long long grazing_pixels = 0;
   AirMetrics air;  // lesson 08: the air light against Truth::airLight (valid only there)
 };
+
+// Why a frame counted no pixel, for the report's "not_counted" and the printed line.
+std::string notCountedReason(const ErrorMetrics& m);
 
 // rendered: the lesson's view=visibility (one float per pixel, any value, NaN counted);
 // truth: from Truth::visibility; weight: from Truth::facingWeight. All the same size.

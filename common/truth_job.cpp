@@ -171,7 +171,7 @@ bool countedPixel(const SurfaceBuffer& s, std::size_t i, const TruthLight& light
   glm::vec3 l;
   if (!lightVector(light, p, l)) return false;
   ndotl = glm::dot(n, l);
-  return ndotl > 0.0f;
+  return ndotl >= kGrazingNdotL;
 }
 
 std::uint64_t TruthJob::sceneId() const {

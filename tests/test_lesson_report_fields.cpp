@@ -107,5 +107,75 @@ TEST(ReportFields, AnUncountedFieldIsNullNotALeftover) {
   EXPECT_TRUE(report(*runner)["taps_per_filtered_fragment"].is_null());
 }
 
+TEST(ReportFields, NothingCountedIsNullWithAReasonNeverAZero) {
+  // The eye looking straight up sees only sky: a 0 % error would read "no error".
+  auto runner = startLesson("03_shadow_map_basic", {"camera.target=0,50,8"}, 96, 72);
+  runner->renderFrame();
+  runner->measureError();
+  const auto json = report(*runner);
+  const auto& e = json["error"];
+  EXPECT_EQ(e["counted_pixels"], 0);
+  EXPECT_EQ(e["covered_pixels"], 0);
+  for (const char* figure : {"false_shadow_pct", "false_lit_pct", "vis_mae", "shade_mae"}) {
+    EXPECT_TRUE(e[figure].is_null()) << figure << " = " << e[figure].dump();
+  }
+  EXPECT_EQ(e["not_counted"], "no pixel shows a surface: the eye sees only sky");
+  const auto& texels = json["texels_per_pixel"];
+  EXPECT_EQ(texels["pixels"], 0);
+  EXPECT_TRUE(texels["min_axis"]["median"].is_null());
+  EXPECT_TRUE(texels["max_axis"]["p95"].is_null());
+  EXPECT_TRUE(texels["not_counted"].is_string());
+  EXPECT_TRUE(json["undersampled_pct"].is_null());
+  // Where pixels are counted, the figures are numbers and no reason is given.
+  ASSERT_EQ(runner->params().set("camera.target", "0,0,0"), "");
+  runner->renderFrame();
+  runner->measureError();
+  const auto seen = report(*runner);
+  EXPECT_TRUE(seen["error"]["false_shadow_pct"].is_number());
+  EXPECT_FALSE(seen["error"].contains("not_counted"));
+  EXPECT_TRUE(seen["undersampled_pct"].is_number());
+}
+
+TEST(ReportFields, TheEyesFarPlaneReachesTheSceneFromAnywhereTheSlidersAllow) {
+  // camera.pos reaches 100 along each axis: 173 from the scene, beyond camera.far's 100.
+  auto runner =
+      startLesson("03_shadow_map_basic",
+                  {"camera.pos=100,100,100", "camera.target=0,0,0", "camera.fov=10"}, 160, 120);
+  runner->renderFrame();
+  const ErrorMetrics& e = runner->measureError().metrics;
+  EXPECT_GT(e.covered_pixels, 2000);  // 0 when the far plane stopped at 100
+  EXPECT_GT(e.counted_pixels, 500);
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
+TEST(ReportFields, ALightLevelWithTheFloorCountsNoGrazingPixel) {
+  // A directional light level with the floor: every floor pixel has N.L about 0, lit or not
+  // by rounding. Not a shadow question (CONTRACTS.md): not counted, but counted as grazing.
+  for (const std::string lesson : {"03_shadow_map_basic", "09_shadow_volumes"}) {
+    auto runner = startLesson(
+        lesson, {"scene=cubes", "light.type=directional", "light.pos=0.5,0,0.5"}, 160, 120);
+    runner->renderFrame();
+    const ErrorMetrics& e = runner->measureError().metrics;
+    EXPECT_GT(e.grazing_pixels, 200) << lesson;
+    EXPECT_LE(e.false_shadow_pct + e.false_lit_pct, 1.0) << lesson;
+    EXPECT_EQ(testing::reportNumber(*runner, "/error/grazing_pixels"), e.grazing_pixels);
+  }
+}
+
+TEST(ReportFields, APointLightOnACastersSurfaceIsNamed) {
+  // 0.6,0.9,1.6 is a vertex of the torus_pyramid's sphere; 1e-3 above it is not on it.
+  auto on = startLesson("09_shadow_volumes", {"light.pos=0.6,0.9,1.6"}, 64, 48);
+  on->renderFrame();
+  EXPECT_EQ(testing::reportString(*on, "light_on_surface"), "sphere");
+  on.reset();  // one GL context at a time
+  auto off = startLesson("09_shadow_volumes", {"light.pos=0.6,0.901,1.6"}, 64, 48);
+  off->renderFrame();
+  EXPECT_EQ(testing::reportString(*off, "light_on_surface"), "");
+  off.reset();
+  auto directional = startLesson("03_shadow_map_basic", {"light.type=directional"}, 64, 48);
+  directional->renderFrame();
+  EXPECT_EQ(testing::reportString(*directional, "light_on_surface"), "");
+}
+
 }  // namespace
 }  // namespace shadows

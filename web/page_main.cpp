@@ -42,9 +42,18 @@ std::string errorSummary() {
   const shadows::ErrorState& error = g_runner->lastError();
   if (g_runner->truthFailed()) return "the ray tracer failed: the browser's console says why";
   if (!error.valid) return "";
+  // Lesson 08's air is measured on its own pixels, counted surfaces or not.
+  char air[64] = "";
+  if (error.metrics.air.valid) {
+    std::snprintf(air, sizeof air, "; air mae %.4f", error.metrics.air.mae);
+  }
+  if (error.metrics.counted_pixels == 0) {
+    return "error against the ray-traced truth: none counted (" +
+           shadows::notCountedReason(error.metrics) + ")" + air;
+  }
   std::snprintf(line, sizeof line,
-                "error against the ray-traced truth: false shadow %.3f %%, false lit %.3f %%",
-                error.metrics.false_shadow_pct, error.metrics.false_lit_pct);
+                "error against the ray-traced truth: false shadow %.3f %%, false lit %.3f %%%s",
+                error.metrics.false_shadow_pct, error.metrics.false_lit_pct, air);
   return line;
 }
 

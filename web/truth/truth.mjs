@@ -168,6 +168,9 @@ function tangentFrame(n) {
   return [t, b];
 }
 
+// truth.hpp's kGrazingNdotL, as a float32 (ndotl is compared in float32 arithmetic there).
+const GRAZING_NDOTL = Math.fround(0.001);
+
 // truth_job.cpp's countedPixel: the point, unit normal and N.L, or null when not counted.
 function countedPixel(job, i) {
   const P = job.surfacePosition, N = job.surfaceNormal, light = job.light;
@@ -183,7 +186,7 @@ function countedPixel(job, i) {
   if (!(ll > 0) || !Number.isFinite(ll)) return null;
   l = divide(l, ll);
   const ndotl = dot(n, l);
-  return ndotl > 0 ? { p, n } : null;
+  return ndotl >= GRAZING_NDOTL ? { p, n } : null;
 }
 
 // Truth::visibility: the fraction of the light each counted pixel's surface sees, for rows
