@@ -120,6 +120,9 @@ class ChoiceParam {
   Param* param_ = nullptr;
 };
 
+// Levenshtein distance: the edits between two names, for "did you mean" (at most 3).
+size_t editDistance(const std::string& a, const std::string& b);
+
 class Params {
  public:
   Param& addFloat(const std::string& name, float def, float min, float max, const std::string& help,

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -176,6 +177,51 @@ TEST_F(Cli, HelpExitsZero) {
   EXPECT_NE(r.output.find("--set name=value"), std::string::npos);
 }
 
+// The one number a pattern captures in `text` ("" when it does not match).
+std::string captured(const std::string& text, const std::string& pattern) {
+  std::smatch m;
+  return std::regex_search(text, m, std::regex(pattern)) ? m[1].str() : std::string();
+}
+
+TEST_F(Cli, TheDocumentedDefaultsOfTheCommandLineAreWhatARunDoes) {
+  // What --help and CONTRACTS.md say a flag defaults to, read from their text, against what a
+  // run without the flag does (its report, the file it writes). A default changed in the code
+  // but not in the text, or the other way round, fails here.
+  const std::string help = run(kLesson, "--help").output;
+  std::ifstream contracts_in(std::string(SHADOWS_SOURCE_DIR) + "/docs/CONTRACTS.md");
+  const std::string contracts{std::istreambuf_iterator<char>(contracts_in), {}};
+  const std::string help_size = captured(help, R"(--size WxH\s+image size \(default (\d+x\d+)\))");
+  const std::string help_frames =
+      captured(help, R"(--frames N\s+timed frames[^(]*\(default (\d+))");
+  const std::string help_device = captured(help, R"(--device N[^(]*\(default (\d+))");
+  const std::string help_backend =
+      captured(help, R"(--backend NAME\s+headless context: (\w+) \(the default on desktop GL\))");
+  ASSERT_EQ(help_size, captured(contracts, R"(image size \(default (\d+x\d+)\))"));
+  ASSERT_EQ(help_frames, captured(contracts, R"(after one warm-up frame \(default (\d+)\))"));
+  ASSERT_EQ(help_device, captured(contracts, R"(egl-device`, 0\.\.63 \(default (\d+)\))"));
+  std::string contracts_backend =
+      captured(contracts, R"(no window: (\w+) \(default on desktop GL)");
+  std::transform(contracts_backend.begin(), contracts_backend.end(), contracts_backend.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  ASSERT_EQ(help_backend, contracts_backend);  // "OSMesa" there, "osmesa" as typed
+  ASSERT_NE(help.find("(default out/LESSON.png"), std::string::npos) << help;
+  ASSERT_NE(contracts.find("headless default: `out/<lesson>.png`"), std::string::npos);
+  ASSERT_FALSE(help_size.empty() || help_frames.empty() || help_backend.empty()) << help;
+
+  // A run that names none of them, from a fresh working directory.
+  const Result r =
+      run(kLesson, "--headless --no-truth --report r.json", "cd " + dir.string() + " && ");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "out" / (kLesson + ".png"))) << "the default picture";
+  const nlohmann::json report = readReport(dir / "r.json");
+  EXPECT_EQ(std::to_string(report["size"][0].get<int>()) + "x" +
+                std::to_string(report["size"][1].get<int>()),
+            help_size);
+  EXPECT_EQ(std::to_string(report["frames"].get<int>()), help_frames);
+  EXPECT_EQ(report["backend"], help_backend);
+  EXPECT_EQ(report["flavour"], "gl45");
+}
+
 TEST_P(Cli, BadInputExitsTwoWithOneLineAndWritesNothing) {
   const std::string out = (dir / "x.png").string(), report = (dir / "r.json").string();
   const std::string args = std::string("--headless --size 64x48 ") + GetParam() + " --out " + out +
@@ -338,6 +384,29 @@ TEST_F(Cli, TwoOutputsIntoOneFileAreRefused) {
   EXPECT_TRUE(dirIsEmpty());
 }
 
+TEST_F(Cli, TheSameFileMessageNamesTheTwoFlagsInvolvedAndTheFile) {
+  // Every pair of outputs, each given in either order on the command line: the one line names
+  // exactly those two flags (in --help's order) and the later one's spelling of the file.
+  const std::vector<std::string> flags = {"--out", "--report", "--truth-out", "--error-out",
+                                          "--truth-job"};
+  for (size_t i = 0; i < flags.size(); ++i) {
+    for (size_t j = i + 1; j < flags.size(); ++j) {
+      const std::string first = (dir / "a.png").string();
+      const std::string second = dir.string() + "/./a.png";
+      const std::string expected = "03_shadow_map_basic: " + flags[i] + " and " + flags[j] +
+                                   " name the same file '" + second + "'\n";
+      for (const bool reversed : {false, true}) {
+        const std::string a = flags[i] + " " + first, b = flags[j] + " " + second;
+        const Result r =
+            run(kLesson, "--headless --size 64x48 " + (reversed ? b + " " + a : a + " " + b));
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_EQ(r.output, expected) << flags[i] << " " << flags[j];
+        EXPECT_TRUE(dirIsEmpty());
+      }
+    }
+  }
+}
+
 // ---------------------------------------------------------------- outputs never clobber
 
 TEST_F(Cli, ALinkToStandardOutputIsWrittenThroughNotReplaced) {
@@ -475,6 +544,45 @@ TEST_F(Cli, AFileWithOtherNamesIsWrittenInPlaceSoAllNamesSeeIt) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(fs::hard_link_count(dir / "r.json"), 2u);
   EXPECT_EQ(readReport(dir / "other.json")["lesson"], kLesson);
+}
+
+TEST_F(Cli, AnOutputOverALongerFileLeavesNoStaleTailHoweverItIsReached) {
+  // Each output written over a file of 1 MiB of 'x': the file afterwards is exactly the new
+  // content (the picture byte for byte what a fresh file gets, the report JSON to its last
+  // byte), whether the name is the file itself, a second hard link to it, or a symbolic link.
+  const std::string args = "--headless --size 64x48 --frames 1 --no-truth";
+  ASSERT_EQ(run(kLesson, args + " --out " + (dir / "fresh.png").string()).exit_code, 0);
+  std::ifstream fresh_in(dir / "fresh.png", std::ios::binary);
+  const std::string fresh{std::istreambuf_iterator<char>(fresh_in), {}};
+  ASSERT_GT(fresh.size(), 100u);
+  const std::string stale(1 << 20, 'x');
+  for (const std::string how : {"regular", "hard_link", "symlink"}) {
+    const fs::path sub = dir / how;
+    fs::create_directories(sub);
+    for (const char* name : {"x.png", "r.json"}) {
+      std::ofstream(sub / (std::string("target_") + name), std::ios::binary) << stale;
+      if (how == "regular") fs::rename(sub / (std::string("target_") + name), sub / name);
+      if (how == "hard_link")
+        fs::create_hard_link(sub / (std::string("target_") + name), sub / name);
+      if (how == "symlink") fs::create_symlink(sub / (std::string("target_") + name), sub / name);
+    }
+    const Result r = run(kLesson, args + " --out " + (sub / "x.png").string() + " --report " +
+                                      (sub / "r.json").string());
+    ASSERT_EQ(r.exit_code, 0) << how << ": " << r.output;
+    std::ifstream png_in(sub / "x.png", std::ios::binary);
+    const std::string png{std::istreambuf_iterator<char>(png_in), {}};
+    EXPECT_EQ(png.size(), fresh.size()) << how;
+    EXPECT_TRUE(png == fresh) << how << ": the picture is not what a fresh file gets";
+    std::ifstream report_in(sub / "r.json", std::ios::binary);
+    const std::string report{std::istreambuf_iterator<char>(report_in), {}};
+    EXPECT_LT(report.size(), stale.size()) << how;
+    EXPECT_EQ(report.find('x' + std::string(16, 'x')), std::string::npos) << how << ": stale tail";
+    EXPECT_FALSE(nlohmann::json::parse(report, nullptr, false).is_discarded()) << how;
+    if (how != "regular") {  // written through the other name: the target holds the same
+      std::ifstream target_in(sub / "target_r.json", std::ios::binary);
+      EXPECT_EQ(std::string(std::istreambuf_iterator<char>(target_in), {}), report) << how;
+    }
+  }
 }
 
 TEST_F(Cli, AnOutputOnTheDefaultPictureIsRefusedUpFront) {

@@ -74,6 +74,31 @@ TEST_F(ParamsTest, UnknownNamesAndMalformedAssignmentsAreRejected) {
   EXPECT_NE(params.assign("=3"), "");
 }
 
+TEST_F(ParamsTest, TheGuessIsTheNearestNameWithinThreeEditsAndNamesItExactly) {
+  // CONTRACTS.md: "did you mean" names the nearest parameter (Levenshtein distance, the
+  // first declared on a tie) when it is at most 3 edits away, and nothing beyond.
+  const auto guess = [&](const std::string& name) {
+    const std::string error = params.set(name, "1");
+    const auto at = error.find("did you mean '");
+    if (at == std::string::npos) return std::string("-");
+    const auto from = at + std::string("did you mean '").size();
+    return error.substr(from, error.find('\'', from) - from);
+  };
+  EXPECT_EQ(guess("dimmimg"), "dimming");        // 1 edit
+  EXPECT_EQ(guess("dimxing"), "dimming");        // 1
+  EXPECT_EQ(guess("dimmxxx"), "dimming");        // 3: still a typo
+  EXPECT_EQ(guess("dimxxxx"), "-");              // 4: not a typo
+  EXPECT_EQ(guess("inse"), "inset");             // a letter short
+  EXPECT_EQ(guess("light.pos.x"), "light.pos");  // 2 more
+  EXPECT_EQ(guess("shadow.sizes"), "shadow.size");
+  EXPECT_EQ(guess("shadow.formt"), "shadow.format");
+  // Nearest, not first: 'shadow.form' is 2 from shadow.format, 4 from shadow.size.
+  EXPECT_EQ(guess("shadow.form"), "shadow.format");
+  EXPECT_EQ(editDistance("kitten", "sitting"), 3u);
+  EXPECT_EQ(editDistance("", "abc"), 3u);
+  EXPECT_EQ(editDistance("flaw", "lawn"), 2u);
+}
+
 TEST_F(ParamsTest, ChangesMarkOnlyWhatDependsOnThem) {
   EXPECT_EQ(params.set("dimming", "0.1"), "");
   EXPECT_FALSE(params.consume(kDirtyShadowMap)) << "dimming does not touch the shadow map";

@@ -145,5 +145,64 @@ TEST(WarpedProjection, FocusedAndLispsmKeepTheBodyInTheMapAndLightRaysOnATexel) 
             "nothing the eye sees lies in the light's frustum");
 }
 
+TEST(WarpedProjection, LispsmsParameterIsWimmersFormulaOnHandWorkedCases) {
+  // With the uniform light the identity, its post-projective space is the world: the light
+  // directional along +z. The body, the cube [-0.5, 0.5]^3; the eye at (0, -2, 0). Then the
+  // warp axis is +y, the body spans depth 1 along it from 1.5 ahead of the eye, and (as the
+  // code does) z_n = 1.5 + 0.01 * depth = 1.51, z_f = z_n + depth / sin(gamma),
+  // n_opt = (z_n + sqrt(z_n z_f)) / sin(gamma) (Wimmer, Scherzer, Purgathofer 2004).
+  std::vector<glm::vec3> cube;
+  for (int i = 0; i < 8; ++i) {
+    cube.push_back({(i & 1) ? 0.5f : -0.5f, (i & 2) ? 0.5f : -0.5f, (i & 4) ? 0.5f : -0.5f});
+  }
+  const glm::vec3 eye(0.0f, -2.0f, 0.0f);
+  struct Case {
+    glm::vec3 forward;
+    float factor, n;  // worked by hand
+  };
+  const float s60 = std::sqrt(3.0f) / 2.0f;
+  const std::vector<Case> cases = {
+      // Across the light (gamma 90 degrees): z_f = 2.51, n = 1.51 + sqrt(3.7901).
+      {{0, 1, 0}, 1.0f, 1.51f + std::sqrt(1.51f * 2.51f)},
+      // 60 degrees from the light: sin(gamma) 0.5, z_f = 3.51, n = (1.51 + sqrt(5.3001)) / 0.5.
+      {{0, 0.5f, s60}, 1.0f, (1.51f + std::sqrt(1.51f * 3.51f)) / 0.5f},
+      // lispsm.n scales n_opt: the slider's 2 and 0.5.
+      {{0, 1, 0}, 2.0f, 2.0f * (1.51f + std::sqrt(1.51f * 2.51f))},
+      {{0, 0.5f, s60}, 0.5f, 0.5f * (1.51f + std::sqrt(1.51f * 3.51f)) / 0.5f},
+  };
+  for (const Case& c : cases) {
+    float n = 0.0f;
+    const Warp w = lispsmProjection({glm::mat4(1.0f), eye, c.forward, cube, c.factor}, &n);
+    ASSERT_EQ(w.fallback, "");
+    EXPECT_NEAR(n, c.n, 1e-4f * c.n) << c.forward.y << " " << c.factor;
+  }
+}
+
+TEST(WarpedProjection, LispsmGivesTheSliceNearTheEyeMoreOfTheMap) {
+  // The warp's direction: equal slices of the body along the view, near the eye and far from
+  // it, in the map. Perspective aliasing is undone when the near slice gets more, the more so
+  // the smaller lispsm.n (the warp's centre closer to the body); a large n is nearly uniform.
+  std::vector<glm::vec3> cube;
+  for (int i = 0; i < 8; ++i) {
+    cube.push_back({(i & 1) ? 0.5f : -0.5f, (i & 2) ? 0.5f : -0.5f, (i & 4) ? 0.5f : -0.5f});
+  }
+  const auto ratio = [&](float factor) {
+    const Warp w = lispsmProjection({glm::mat4(1.0f), {0, -2, 0}, {0, 1, 0}, cube, factor});
+    EXPECT_EQ(w.fallback, "");
+    const auto map = [&](glm::vec3 p) { return glm::vec2(ndc(w.view_projection, p)); };
+    // A light ray (along +z here) stays on one texel.
+    EXPECT_NEAR(glm::distance(map({0.1f, 0.0f, 0.2f}), map({0.1f, 0.0f, -0.4f})), 0.0f, 1e-4f);
+    const float near_slice = glm::length(map({0.1f, -0.3f, 0.2f}) - map({0.1f, -0.4f, 0.2f}));
+    const float far_slice = glm::length(map({0.1f, 0.4f, 0.2f}) - map({0.1f, 0.3f, 0.2f}));
+    return near_slice / far_slice;
+  };
+  const float strong = ratio(0.1f), optimal = ratio(1.0f), weak = ratio(10.0f);
+  EXPECT_GT(optimal, 1.2f) << "the near slice gets more of the map";
+  EXPECT_GT(strong, optimal);
+  EXPECT_GT(optimal, weak);
+  EXPECT_GT(weak, 1.0f);
+  EXPECT_LT(weak, 1.1f) << "n far from the body: nearly uniform";
+}
+
 }  // namespace
 }  // namespace shadows
