@@ -32,6 +32,25 @@ size_t utf8SequenceLength(const std::string& text, size_t i) {
   return length;
 }
 
+namespace {
+
+// The code point of a well-formed sequence of `length` bytes at text[i].
+char32_t codePoint(const std::string& text, size_t i, size_t length) {
+  const auto byte = [&](size_t k) { return static_cast<unsigned char>(text[i + k]); };
+  if (length == 1) return byte(0);
+  char32_t c = byte(0) & (0xFF >> (length + 1));
+  for (size_t k = 1; k < length; ++k) c = (c << 6) | (byte(k) & 0x3F);
+  return c;
+}
+
+// Bidirectional formatting characters: shown raw, U+202E reverses the rest of a message.
+bool bidiControl(char32_t c) {
+  return c == 0x061C || c == 0x200E || c == 0x200F || (c >= 0x202A && c <= 0x202E) ||
+         (c >= 0x2066 && c <= 0x2069);
+}
+
+}  // namespace
+
 std::string printable(const std::string& text) {
   std::string out;
   out.reserve(text.size());
@@ -48,6 +67,12 @@ std::string printable(const std::string& text) {
       char escaped[8];
       std::snprintf(escaped, sizeof escaped, "\\x%02X", c);
       out += escaped;
+    } else if (const char32_t point = codePoint(text, i, length); bidiControl(point)) {
+      char escaped[10];
+      std::snprintf(escaped, sizeof escaped, "\\u%04X", static_cast<unsigned>(point));
+      out += escaped;
+      i += length;
+      continue;
     } else {
       out.append(text, i, length);
       i += length;

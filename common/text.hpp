@@ -6,7 +6,8 @@
 namespace shadows {
 
 // `text` safe to print on one line: newline, carriage return and tab as \n \r \t, other
-// control bytes and bytes that are not UTF-8 as \xNN. Valid UTF-8 passes unchanged, and so
+// control bytes and bytes that are not UTF-8 as \xNN, bidirectional formatting characters
+// (U+202E and its kin) as \uNNNN. Other valid UTF-8 passes unchanged, and so
 // does a text it already escaped (it adds no backslash of its own to a backslash), so every
 // message can go through it once more where it is printed.
 std::string printable(const std::string& text);

@@ -64,6 +64,15 @@ TEST(Printable, OneLineOfValidUtf8AndIdempotent) {
   for (const char c : shown) EXPECT_GE(static_cast<unsigned char>(c), 0x20) << shown;
 }
 
+TEST(Printable, BidiControlsAreEscapedSoNoMessageReadsBackwards) {
+  // A right-to-left override (U+202E) in a --set value would reverse the rest of the notice.
+  const std::string raw =
+      "dueling\xe2\x80\xae<junk> \xe2\x81\xa6x\xe2\x81\xa9 \xd8\x9c \xe2\x80\x8f \xe2\x82\xac";
+  const std::string shown = printable(raw);
+  EXPECT_EQ(shown, "dueling\\u202E<junk> \\u2066x\\u2069 \\u061C \\u200F \xe2\x82\xac");
+  EXPECT_EQ(printable(shown), shown);
+}
+
 TEST(Utf8, WellFormedSequencesOnly) {
   EXPECT_EQ(utf8SequenceLength("a", 0), 1u);
   EXPECT_EQ(utf8SequenceLength("\xc3\xa9", 0), 2u);
