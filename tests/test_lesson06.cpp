@@ -169,6 +169,38 @@ TEST(Lesson06, PassTwoLightsOnlyWhatTheAlphaTestPasses) {
   EXPECT_EQ(runner->measure().lastFrameWork().count("pass2"), 0u);
 }
 
+TEST(Lesson06, PassTwoAloneIsTheFramesLitPixelsOnBlackAndNothingElse) {
+  // README: "--set pass.dimmed=false (pass 2 alone: only the lit fragments)". Not only
+  // "something changed": where the shadow term is lit the picture is the whole frame's, and
+  // everywhere else (shadow, sky) it is black: no dimmed colour, no sky, no hole of another
+  // colour.
+  auto runner = startLesson(kLesson, {}, 160, 120);
+  runner->renderFrame();
+  const Image whole = runner->readImage();
+  const std::vector<float> visibility = runner->renderVisibility();
+  ASSERT_EQ(runner->params().set("pass.dimmed", "false"), "");
+  runner->renderFrame();
+  const Image alone = runner->readImage();
+  ASSERT_EQ(runner->glErrors(), 0);
+  size_t lit = 0, lit_differing = 0, dark = 0, dark_not_black = 0;
+  for (size_t i = 0; i < visibility.size(); ++i) {
+    int worst = 0, brightest = 0;
+    for (size_t c = 0; c < 3; ++c) {
+      worst = std::max(worst, std::abs(whole.rgba[4 * i + c] - alone.rgba[4 * i + c]));
+      brightest = std::max(brightest, static_cast<int>(alone.rgba[4 * i + c]));
+    }
+    if (visibility[i] == 1.0f) {
+      ++lit, lit_differing += worst > 2;
+    } else {
+      ++dark, dark_not_black += brightest > 0;
+    }
+  }
+  EXPECT_GT(lit, 3000u);
+  EXPECT_GT(dark, 3000u) << "shadow and sky";
+  EXPECT_EQ(lit_differing, 0u) << "a lit pixel is the whole frame's";
+  EXPECT_EQ(dark_not_black, 0u) << "only the lit fragments are drawn";
+}
+
 TEST(Lesson06, EveryInputOfTheMapRendersItAgainAndTheCachedFrameMatchesAnUncachedOne) {
   std::vector<std::string> inputs = testing::readbackMapInputs();
   inputs.push_back("map.encoding=linear");
