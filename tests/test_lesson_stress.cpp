@@ -100,6 +100,47 @@ TEST_P(EveryLesson, EveryViewRendersWithEverySwitchAtEachOfItsValues) {
   }
 }
 
+TEST_P(EveryLesson, NoSwitchOpensASkyColouredHoleOrBlacksTheFrame) {
+  // The shaded frame with each boolean and choice off its default: where the default frame
+  // shows a surface, the switched one must not show the sky's colour (a hole: the surface
+  // not drawn), and the frame must not be black all over.
+  std::vector<std::pair<std::string, std::string>> switches;
+  Image reference;
+  {
+    auto runner = testing::startLesson(GetParam(), {}, 64, 48);
+    for (const Param& p : runner->params().all()) {
+      if (p.name == "view" || p.name == "scene") continue;
+      if (p.kind == ParamKind::Bool) switches.emplace_back(p.name, p.b() ? "false" : "true");
+      if (p.kind != ParamKind::Choice) continue;
+      for (const std::string& c : p.choices) {
+        if (!p.is(c)) switches.emplace_back(p.name, c);
+      }
+    }
+    runner->renderFrame();
+    reference = runner->readImage();
+  }
+  const auto sky = [](const Image& image, size_t i) {
+    for (int c = 0; c < 3; ++c) {
+      const int level = static_cast<int>(std::lround(255.0f * Frame::kSky[c]));
+      if (std::abs(image.rgba[4 * i + static_cast<size_t>(c)] - level) > 1) return false;
+    }
+    return true;
+  };
+  const size_t pixels = reference.rgba.size() / 4;
+  for (const auto& [name, value] : switches) {
+    auto runner = testing::startLesson(GetParam(), {name + "=" + value}, 64, 48);
+    runner->renderFrame();
+    const Image image = runner->readImage();
+    size_t holes = 0, lit = 0;
+    for (size_t i = 0; i < pixels; ++i) {
+      holes += !sky(reference, i) && sky(image, i);
+      lit += image.rgba[4 * i] + image.rgba[4 * i + 1] + image.rgba[4 * i + 2] > 0;
+    }
+    EXPECT_LE(holes, pixels / 200) << name << "=" << value << ": sky where a surface was";
+    EXPECT_GT(lit, pixels / 4) << name << "=" << value << ": a black frame";
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Lessons, EveryLesson, ::testing::ValuesIn(registeredLessons()),
                          [](const ::testing::TestParamInfo<std::string>& lesson) {
                            return lesson.param;
