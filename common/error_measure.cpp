@@ -236,20 +236,15 @@ Runner::TruthResult Runner::traceTruth(TruthInputs in) {
   const int w = in.width, h = in.height;
   const size_t n = static_cast<size_t>(w) * h;
   const std::vector<float>& truth = trace.visibility;
-  const std::vector<float> weight = Truth::facingWeight(job.surface, job.light);
+  long long grazing = 0;
+  const std::vector<float> weight = Truth::facingWeight(job.surface, job.light, &grazing);
   ErrorMetrics& m = out.metrics;
   m = compareVisibility(in.rendered, truth, weight);
+  m.grazing_pixels = grazing;
   // Every surface the eye sees writes its normal, counted or not; the sky keeps the clear 0.
   m.covered_pixels =
       std::count_if(job.surface.normal.begin(), job.surface.normal.end(),
                     [](const glm::vec4& normal) { return glm::dot(normal, normal) > 0.0f; });
-  for (size_t i = 0; i < job.surface.position.size(); ++i) {
-    glm::vec3 p, normal;
-    float ndotl = 0.0f;  // set only where a surface faces some way
-    if (!countedPixel(job.surface, i, job.light, p, normal, ndotl) && ndotl > 0.0f) {
-      ++m.grazing_pixels;
-    }
-  }
   m.truth = in.truth_name;
   // Non-finite pixels: where the visibility or any channel of the shaded picture is NaN or
   // Inf, each pixel counted once.

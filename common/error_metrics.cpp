@@ -105,15 +105,21 @@ std::vector<std::uint8_t> errorImage(const std::vector<std::uint8_t>& shadedRgba
   return out;
 }
 
-std::vector<float> Truth::facingWeight(const SurfaceBuffer& surface, const TruthLight& light) {
+std::vector<float> Truth::facingWeight(const SurfaceBuffer& surface, const TruthLight& light,
+                                       long long* grazing) {
   if (surface.position.size() != static_cast<std::size_t>(surface.width) * surface.height) {
     throw std::invalid_argument("facingWeight: surface buffer does not match its size");
   }
   std::vector<float> out(surface.position.size(), 0.0f);
+  if (grazing != nullptr) *grazing = 0;
   for (std::size_t i = 0; i < out.size(); ++i) {
     glm::vec3 p, n;
-    float ndotl;
-    if (countedPixel(surface, i, light, p, n, ndotl)) out[i] = std::min(ndotl, 1.0f);
+    float ndotl = 0.0f;  // countedPixel sets it only where a surface faces some way
+    if (countedPixel(surface, i, light, p, n, ndotl)) {
+      out[i] = std::min(ndotl, 1.0f);
+    } else if (grazing != nullptr && ndotl > 0.0f) {
+      ++*grazing;
+    }
   }
   return out;
 }

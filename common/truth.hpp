@@ -78,8 +78,10 @@ class Truth {
   std::vector<float> visibility(const SurfaceBuffer& surface, const TruthLight& light) const;
 
   // N.L per pixel (0 where not counted); the weight of shade_mae (error_metrics.cpp: no
-  // Embree, a browser's build has it too).
-  static std::vector<float> facingWeight(const SurfaceBuffer& surface, const TruthLight& light);
+  // Embree, a browser's build has it too). `grazing`, if given, gets the pixels that face the
+  // light only at a graze (0 < N.L < kGrazingNdotL): shown, not counted.
+  static std::vector<float> facingWeight(const SurfaceBuffer& surface, const TruthLight& light,
+                                         long long* grazing = nullptr);
 
   float rayOffset() const { return ray_offset_; }
   // Relative, not absolute: an absolute epsilon is wrong for either tiny or huge scenes.

@@ -42,6 +42,21 @@ std::string randomValue(const Param& p, std::mt19937& rng) {
 
 class EveryLesson : public ::testing::TestWithParam<std::string> {};
 
+// Every boolean and every choice moved off its default, one (name, value) each; the view and
+// the scene are what the tests loop over or keep.
+std::vector<std::pair<std::string, std::string>> offDefaultSwitches(const Params& params) {
+  std::vector<std::pair<std::string, std::string>> switches;
+  for (const Param& p : params.all()) {
+    if (p.name == "view" || p.name == "scene") continue;
+    if (p.kind == ParamKind::Bool) switches.emplace_back(p.name, p.b() ? "false" : "true");
+    if (p.kind != ParamKind::Choice) continue;
+    for (const std::string& c : p.choices) {
+      if (!p.is(c)) switches.emplace_back(p.name, c);
+    }
+  }
+  return switches;
+}
+
 TEST_P(EveryLesson, RandomSliderPositionsStayFiniteAndErrorFree) {
   std::mt19937 rng(20261125);
   auto runner = testing::startLesson(GetParam(), {}, 96, 72);
@@ -81,14 +96,7 @@ TEST_P(EveryLesson, EveryViewRendersWithEverySwitchAtEachOfItsValues) {
   {
     auto probe = testing::startLesson(GetParam(), {}, 8, 8);
     views = probe->params().at("view").choices;
-    for (const Param& p : probe->params().all()) {
-      if (p.name == "view" || p.name == "scene") continue;
-      if (p.kind == ParamKind::Bool) switches.emplace_back(p.name, p.b() ? "false" : "true");
-      if (p.kind != ParamKind::Choice) continue;
-      for (const std::string& c : p.choices) {
-        if (!p.is(c)) switches.emplace_back(p.name, c);
-      }
-    }
+    switches = offDefaultSwitches(probe->params());
   }
   for (const auto& [name, value] : switches) {
     auto runner = testing::startLesson(GetParam(), {name + "=" + value}, 48, 36);
@@ -108,14 +116,7 @@ TEST_P(EveryLesson, NoSwitchOpensASkyColouredHoleOrBlacksTheFrame) {
   Image reference;
   {
     auto runner = testing::startLesson(GetParam(), {}, 64, 48);
-    for (const Param& p : runner->params().all()) {
-      if (p.name == "view" || p.name == "scene") continue;
-      if (p.kind == ParamKind::Bool) switches.emplace_back(p.name, p.b() ? "false" : "true");
-      if (p.kind != ParamKind::Choice) continue;
-      for (const std::string& c : p.choices) {
-        if (!p.is(c)) switches.emplace_back(p.name, c);
-      }
-    }
+    switches = offDefaultSwitches(runner->params());
     runner->renderFrame();
     reference = runner->readImage();
   }
