@@ -14,8 +14,8 @@
 #include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "app.hpp"
-#include "json.hpp"
+#include "core/json.hpp"
+#include "run/runner.hpp"
 
 namespace shadows {
 

@@ -12,8 +12,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app.hpp"
-#include "json.hpp"
+#include "core/json.hpp"
+#include "run/runner.hpp"
 
 namespace shadows {
 

@@ -10,9 +10,9 @@
 
 #include <cstdio>
 
-#include "app.hpp"
-#include "json.hpp"
-#include "shadow_map.hpp"
+#include "core/json.hpp"
+#include "run/runner.hpp"
+#include "shadow/shadow_map.hpp"
 
 namespace shadows {
 

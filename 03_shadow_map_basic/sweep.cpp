@@ -1,5 +1,5 @@
 // Lesson 03's time-vs-error sweep for bench_sweep (bench/README.md).
-#include "sweep_spec.hpp"
+#include "lesson/sweep_spec.hpp"
 
 SHADOWS_SWEEP({.scenes = {"torus_pyramid", "cubes"},
                .axes = {{"shadow.size", {"128", "256", "512", "1024", "2048", "4096"}},

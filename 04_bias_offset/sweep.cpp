@@ -1,5 +1,5 @@
 // Lesson 04's time-vs-error sweep for bench_sweep (bench/README.md).
-#include "sweep_spec.hpp"
+#include "lesson/sweep_spec.hpp"
 
 // Bias costs nothing: the plot is about error, along the constant bias from none to far too
 // much (acne falls, then peter panning rises), one series per method.

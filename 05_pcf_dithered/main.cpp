@@ -19,10 +19,10 @@
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "app.hpp"
-#include "json.hpp"
+#include "core/json.hpp"
 #include "pcf_math.hpp"
-#include "shadow_map.hpp"
+#include "run/runner.hpp"
+#include "shadow/shadow_map.hpp"
 
 namespace shadows {
 

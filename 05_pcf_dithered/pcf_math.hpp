@@ -160,7 +160,7 @@ inline std::vector<glm::vec2> tapOffsets(Mode mode, int taps, float radius) {
 // at distance dOccluder from the light a penumbra of half-width a (dReceiver - dOccluder) /
 // dOccluder on a receiver at dReceiver (similar triangles through the edge). Equal when
 //   a = kernelTexels * h * dOccluder / (dReceiver - dOccluder).
-// The directional truth (common/truth.cpp) is a cone of half-angle atan(a / dReceiver)
+// The directional truth (common/truth/truth.cpp) is a cone of half-angle atan(a / dReceiver)
 // around each receiver point's own ray, so its penumbra is a (dReceiver - dOccluder) /
 // dReceiver, and then a = kernelTexels * h * dReceiver / (dReceiver - dOccluder).
 // It can match at one occluder-receiver gap only: nearer contacts get too much blur from the

@@ -1,5 +1,5 @@
 // Lesson 05's time-vs-error sweep for bench_sweep (bench/README.md).
-#include "sweep_spec.hpp"
+#include "lesson/sweep_spec.hpp"
 
 // Kernels from cheapest to dearest, so the front shows where 001's 4-tap dither sits against 64
 // taps. The radius in texels and the map size set the area light of the truth (a radius of 1 at

@@ -12,9 +12,9 @@
 // is the point, and lesson 07 is the fix.
 #include <imgui.h>
 
-#include "app.hpp"
-#include "depth_readback.hpp"
-#include "json.hpp"
+#include "core/json.hpp"
+#include "run/runner.hpp"
+#include "shadow/depth_readback.hpp"
 
 namespace shadows {
 

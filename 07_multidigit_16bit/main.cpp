@@ -12,9 +12,9 @@
 // the first ones are equal. With the same 8-bit hardware, 16 bits of depth.
 #include <imgui.h>
 
-#include "app.hpp"
-#include "depth_readback.hpp"
-#include "json.hpp"
+#include "core/json.hpp"
+#include "run/runner.hpp"
+#include "shadow/depth_readback.hpp"
 
 namespace shadows {
 

@@ -6,15 +6,15 @@
 //   4. blend slices facing the eye back to front, so the air glows where the light reaches
 //      it and goes dark behind the casters.
 // The slices are a Riemann sum of the light scattered along each eye ray; the truth
-// (common/air_truth.cpp) integrates the same light with Embree shadow rays.
+// (common/truth/air_truth.cpp) integrates the same light with Embree shadow rays.
 #include <imgui.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "app.hpp"
-#include "json.hpp"
-#include "shadow_map.hpp"
-#include "spotlight.hpp"
+#include "core/json.hpp"
+#include "core/spotlight.hpp"
+#include "run/runner.hpp"
+#include "shadow/shadow_map.hpp"
 
 namespace shadows {
 

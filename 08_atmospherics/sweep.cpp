@@ -1,5 +1,5 @@
 // Lesson 08's time-vs-error sweep for bench_sweep (bench/README.md).
-#include "sweep_spec.hpp"
+#include "lesson/sweep_spec.hpp"
 
 // Slices against the air's resolution: where more slices stop paying, and what computing the
 // air at 1/2, 1/3 or 1/4 of the width and height (upsampled by depth) costs in error.

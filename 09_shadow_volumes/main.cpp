@@ -16,10 +16,10 @@
 #include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "app.hpp"
-#include "caps.hpp"
-#include "json.hpp"
-#include "shadow_volume.hpp"
+#include "core/json.hpp"
+#include "gl/caps.hpp"
+#include "math/shadow_volume.hpp"
+#include "run/runner.hpp"
 
 namespace shadows {
 

@@ -1,5 +1,5 @@
 // Lesson 09's time-vs-error sweep for bench_sweep (bench/README.md).
-#include "sweep_spec.hpp"
+#include "lesson/sweep_spec.hpp"
 
 // The method runs along each series: on torus_pyramid all three are right and z-fail pays for
 // its caps; with the eye inside a volume z-pass is wrong at any price. The volume geometry and

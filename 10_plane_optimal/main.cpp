@@ -13,10 +13,10 @@
 //   the warped z/w, so the warp changes sampling and nothing else.
 #include <imgui.h>
 
-#include "app.hpp"
-#include "json.hpp"
-#include "shadow_map.hpp"
-#include "warped_projection.hpp"
+#include "core/json.hpp"
+#include "math/warped_projection.hpp"
+#include "run/runner.hpp"
+#include "shadow/shadow_map.hpp"
 
 namespace shadows {
 

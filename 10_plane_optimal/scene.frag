@@ -34,7 +34,7 @@ float shadowTerm() {
 #endif
 }
 
-// The same test as inRegionOne() in common/warped_projection.cpp.
+// The same test as inRegionOne() in common/math/warped_projection.cpp.
 bool inRegionOne(vec3 p) {
   vec3 dir = uLight.w == 0.0 ? -uLight.xyz : p - uLight.xyz;
   float denom = dot(uPlane.xyz, dir);

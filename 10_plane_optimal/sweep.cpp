@@ -1,7 +1,7 @@
 // Lesson 10's sweep for bench_sweep (bench/README.md): error and under-sampling against the
 // map's size, per projection, on each preset: which projection reaches a given error with the
 // smallest map.
-#include "sweep_spec.hpp"
+#include "lesson/sweep_spec.hpp"
 
 SHADOWS_SWEEP({.scenes = {"dueling", "strategy", "receding"},
                .axes = {{"shadow.size", {"128", "256", "512", "1024", "2048"}},

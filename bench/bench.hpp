@@ -1,6 +1,6 @@
 // bench_sweep's engine, private to bench/: what it runs (Config), what it measured (Result), and
 // the files that hold each step. The sweeps themselves are data: every lesson's in
-// NN_name/sweep.cpp (common/sweep_spec.hpp), the studies across lessons in studies.cpp.
+// NN_name/sweep.cpp (common/lesson/sweep_spec.hpp), the studies across lessons in studies.cpp.
 //
 //   sweep_main.cpp  command line, main(): which sweeps, the benchmarks, the files per sweep
 //   configs.cpp     a sweep -> its configurations; the catalogue of sweeps; --set checks
@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "app.hpp"
 #include "front.hpp"
-#include "sweep_spec.hpp"
+#include "lesson/sweep_spec.hpp"
+#include "run/runner.hpp"
 
 namespace shadows::bench {
 
@@ -39,7 +39,7 @@ struct Options {
   std::vector<std::string> sets;
   // --replot: run nothing, mark and plot this CSV.
   std::filesystem::path replot;
-  // --backend, --device: the headless context (common/context.hpp); empty: the default.
+  // --backend, --device: the headless context (common/gl/context.hpp); empty: the default.
   std::string backend;
   int device = 0;
 };

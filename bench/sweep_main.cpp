@@ -17,10 +17,10 @@
 #include <fstream>
 #include <regex>
 
-#include "arguments.hpp"
 #include "bench.hpp"
-#include "context.hpp"
-#include "text.hpp"
+#include "core/arguments.hpp"
+#include "core/text.hpp"
+#include "gl/context.hpp"
 
 namespace shadows::bench {
 namespace {
@@ -52,7 +52,7 @@ const char* kUsage =
     "Google Benchmark's own flags (e.g. --benchmark_filter=cubes) are passed through.\n";
 
 // Returns "" or what was wrong (exit 2). --size, --frames, --rounds and --set read and say
-// what is wrong as the lessons' own command line does (common/arguments.hpp).
+// what is wrong as the lessons' own command line does (common/core/arguments.hpp).
 std::string parse(int argc, char** argv, Options& o, bool& all) {
   bool device_given = false;
   for (Arguments args(argc, argv); args.next();) {

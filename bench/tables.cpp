@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "bench.hpp"
-#include "json.hpp"
+#include "core/json.hpp"
 
 namespace shadows::bench {
 namespace {

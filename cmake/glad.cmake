@@ -1,7 +1,7 @@
 # The GL loader is generated at configure time by Debian's glad 2 (python3-glad), offline
 # thanks to --reproducible, one per build flavour (SHADOWS_GL): each API gets a loader with only
 # its own functions, so a call above the flavour's version does not compile. Extensions listed
-# here are optional: the code checks them at run time (common/caps.cpp). Nothing generated is
+# here are optional: the code checks them at run time (common/gl/caps.cpp). Nothing generated is
 # committed.
 find_program(GLAD_EXECUTABLE glad PATHS /usr/bin NO_DEFAULT_PATH)
 find_program(GLAD_EXECUTABLE glad)

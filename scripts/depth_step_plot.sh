@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The depth-step curve of lessons 06/07 (issue 19): the world size of one step of an 8-bit
 # map against the distance from the light, for several near planes, from the formula the
-# lessons report (common/shadow_math.hpp depthStepWorld): z^2 (f - n) / (f n 255) for
+# lessons report (common/math/shadow_math.hpp depthStepWorld): z^2 (f - n) / (f n 255) for
 # projective depth, (f - n) / 255 for linear. Writes docs/depth_step.png.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Instructions per frame, counted by callgrind: deterministic where timings on a shared machine
 # are not. One headless run of LESSON (--frames 4, no truth) with a callgrind dump before each
-# frame the runner renders; common/outputs.cpp interleaves the lesson's frames with their
+# frame the runner renders; common/run/outputs.cpp interleaves the lesson's frames with their
 # shadow.off baseline frames, so after the warm-ups the dumps alternate: baseline, frame, ...
 # llvmpipe rasterizes in the calling thread (LP_NUM_THREADS=0), so a frame's shading lands
 # in its own dump. Prints the median of the 3 steady frames and of the 3 baselines, and their

@@ -24,9 +24,9 @@
 #include <string>
 #include <vector>
 
-#include "app.hpp"
-#include "image.hpp"
-#include "json.hpp"
+#include "core/image.hpp"
+#include "core/json.hpp"
+#include "run/runner.hpp"
 
 namespace {
 

@@ -1,9 +1,9 @@
 // Drives a lesson in-process, headless, exactly as its binary would.
 #pragma once
 
-#include "app.hpp"
-#include "image.hpp"
-#include "json.hpp"
+#include "core/image.hpp"
+#include "core/json.hpp"
+#include "run/runner.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

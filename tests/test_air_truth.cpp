@@ -1,4 +1,4 @@
-// The truth for lesson 08's air (common/air_truth.cpp) against closed forms: the chord of an
+// The truth for lesson 08's air (common/truth/air_truth.cpp) against closed forms: the chord of an
 // eye ray through a spot's frustum, the shadow of a sphere on it, and a quadrature of the
 // built-in spot along it.
 #include <gtest/gtest.h>
@@ -7,10 +7,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <vector>
 
-#include "shadow_math.hpp"
-#include "spotlight.hpp"
+#include "core/spotlight.hpp"
+#include "math/shadow_math.hpp"
 #include "test_meshes.hpp"
-#include "truth.hpp"
+#include "truth/truth.hpp"
 
 namespace shadows {
 namespace {

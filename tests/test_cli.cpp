@@ -20,7 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "image.hpp"
+#include "core/image.hpp"
 
 namespace {
 

@@ -1,6 +1,6 @@
 // The arithmetic of lessons 06 and 07, from the very file their shaders include
 // (common/shaders/depth_digits.glsl), against exact integer comparisons.
-#include "depth_digits.hpp"
+#include "shadow/depth_digits.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // GL helpers with a real (headless) context: shader errors name file and line, #include
 // works, and the error log catches every GL error.
-#include "context.hpp"
-#include "gl.hpp"
-#include "program.hpp"
+#include "gl/context.hpp"
+#include "gl/gl.hpp"
+#include "gl/program.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The report writer: valid nesting, escaping, and no NaN in JSON.
-#include "json.hpp"
+#include "core/json.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "text.hpp"
+#include "core/text.hpp"
 
 namespace shadows {
 namespace {

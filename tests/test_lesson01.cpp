@@ -3,7 +3,7 @@
 // against the ray-traced truth.
 #include "harness.hpp"
 
-#include "json.hpp"
+#include "core/json.hpp"
 
 #include <imgui_internal.h>
 

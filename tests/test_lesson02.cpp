@@ -3,7 +3,7 @@
 // bad input), and what a projector without a depth test gets wrong against the truth.
 #include "harness.hpp"
 
-#include "json.hpp"
+#include "core/json.hpp"
 
 #include <imgui.h>
 

@@ -2,7 +2,7 @@
 // and how wrong its unbiased shadows are against the ray-traced truth.
 #include "harness.hpp"
 
-#include "json.hpp"
+#include "core/json.hpp"
 
 #include <filesystem>
 

@@ -3,7 +3,7 @@
 // breaks at the ends of the sliders.
 #include "harness.hpp"
 
-#include "json.hpp"
+#include "core/json.hpp"
 
 #include <imgui.h>
 

@@ -3,7 +3,7 @@
 // the area light the truth uses, and cost against error for 4 dithered taps and 64.
 #include "harness.hpp"
 
-#include "json.hpp"
+#include "core/json.hpp"
 
 #include <cstdint>
 #include <filesystem>

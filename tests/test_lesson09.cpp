@@ -2,7 +2,7 @@
 // measured against the ray-traced truth, and its fix.
 #include "harness.hpp"
 
-#include "shadow_volume.hpp"
+#include "math/shadow_volume.hpp"
 
 namespace shadows {
 namespace {

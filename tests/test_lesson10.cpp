@@ -3,7 +3,7 @@
 // error, region II, every fallback, every view.
 #include "harness.hpp"
 
-#include "json.hpp"
+#include "core/json.hpp"
 
 namespace shadows {
 namespace {

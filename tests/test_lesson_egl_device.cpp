@@ -1,7 +1,7 @@
 // The EGL device platform (--backend egl-device, what a GPU without a display offers) on
 // Mesa's software device renders every lesson byte for byte as OSMesa does, and the report
 // names the device it chose.
-#include "context.hpp"
+#include "gl/context.hpp"
 #include "harness.hpp"
 
 namespace shadows {

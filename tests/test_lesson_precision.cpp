@@ -3,7 +3,7 @@
 // a linear (eye-planar) depth does not care about near at all. Pinned on lesson 06 with the
 // frustum set by hand, a 1024² map, torus_pyramid (the table in its README).
 #include "harness.hpp"
-#include "shadow_math.hpp"
+#include "math/shadow_math.hpp"
 
 namespace shadows {
 namespace {

@@ -3,8 +3,8 @@
 // accumulated), the size a run was given, and pixel counts that nest.
 #include <algorithm>
 
+#include "gl/measure.hpp"
 #include "harness.hpp"
-#include "measure.hpp"
 
 namespace shadows {
 namespace {

@@ -4,7 +4,7 @@
 #include <algorithm>
 
 #include "harness.hpp"
-#include "sweep_spec.hpp"
+#include "lesson/sweep_spec.hpp"
 
 namespace shadows {
 namespace {

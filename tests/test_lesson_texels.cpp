@@ -1,8 +1,8 @@
-// Texels per pixel (common/texel_density.hpp) in every shadow-map lesson: a closed-form case,
+// Texels per pixel (common/math/texel_density.hpp) in every shadow-map lesson: a closed-form case,
 // the dueling frusta's under-sampling in numbers, the `aliasing` view and the report fields.
 #include "harness.hpp"
 
-#include "json.hpp"
+#include "core/json.hpp"
 
 namespace shadows {
 namespace {

@@ -6,8 +6,8 @@
 #include <array>
 #include <filesystem>
 
+#include "core/spotlight.hpp"
 #include "harness.hpp"
-#include "spotlight.hpp"
 
 namespace shadows {
 namespace {

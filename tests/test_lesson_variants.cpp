@@ -2,7 +2,7 @@
 // report names the variant each pass ran (shader_variants) and how many programs the run
 // compiled (shader_variants_compiled): both are work counters, so they are asserted here.
 #include "harness.hpp"
-#include "sweep_spec.hpp"
+#include "lesson/sweep_spec.hpp"
 
 namespace shadows {
 namespace {

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "truth.hpp"
+#include "truth/truth.hpp"
 
 namespace shadows {
 namespace {

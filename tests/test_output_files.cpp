@@ -1,7 +1,7 @@
 // Where outputs go: links written through, devices in place, regular files replaced
 // atomically, the same file recognized however it is named, and temporaries that never
 // collide with a user's file or outgrow the file system's name limit.
-#include "output_files.hpp"
+#include "core/output_files.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>

@@ -1,7 +1,7 @@
 // Parameters: declared once, set from text with one-line errors that say what is allowed.
-#include "params.hpp"
+#include "core/params.hpp"
 
-#include "json.hpp"
+#include "core/json.hpp"
 
 #include <gtest/gtest.h>
 

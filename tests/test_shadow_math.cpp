@@ -1,5 +1,5 @@
 // The matrices of the seeds, checked against numbers worked out by hand.
-#include "shadow_math.hpp"
+#include "math/shadow_math.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
-// The arithmetic of texels per pixel (common/texel_density.hpp): singular values of the
+// The arithmetic of texels per pixel (common/math/texel_density.hpp): singular values of the
 // screen-to-map Jacobian and the report's percentiles.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "texel_density.hpp"
+#include "math/texel_density.hpp"
 
 namespace shadows {
 namespace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "test_meshes.hpp"
-#include "truth.hpp"
+#include "truth/truth.hpp"
 
 namespace shadows {
 namespace {

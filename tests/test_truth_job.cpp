@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "test_meshes.hpp"
-#include "truth_job.hpp"
+#include "truth/truth_job.hpp"
 
 namespace shadows {
 namespace {

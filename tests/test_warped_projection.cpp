@@ -1,12 +1,12 @@
-// Lesson 10's projections (common/warped_projection.hpp) as matrices: plane_optimal is the
+// Lesson 10's projections (common/math/warped_projection.hpp) as matrices: plane_optimal is the
 // camera on its plane and a projection through the light; every projection keeps a light ray
 // on one texel; the fallbacks say why.
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "shadow_math.hpp"
-#include "warped_projection.hpp"
+#include "math/shadow_math.hpp"
+#include "math/warped_projection.hpp"
 
 namespace shadows {
 namespace {

@@ -8,9 +8,9 @@
 #include <memory>
 #include <string>
 
-#include "app.hpp"
-#include "gl.hpp"
-#include "text.hpp"
+#include "core/text.hpp"
+#include "gl/gl.hpp"
+#include "run/runner.hpp"
 
 namespace {
 

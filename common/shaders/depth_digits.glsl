@@ -1,6 +1,6 @@
 // The arithmetic of seed 000's shadow maps for hardware without depth textures, written once
 // in the subset GLSL and C++ share: the shaders #include this file, and so does
-// common/depth_digits.hpp, which the tests check against exact integer comparisons.
+// common/shadow/depth_digits.hpp, which the tests check against exact integer comparisons.
 // Values are in map steps: 0..255 for one 8-bit digit, 0..65535 for two.
 
 // What glReadPixels(GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE or GL_UNSIGNED_SHORT) makes of a

@@ -1,5 +1,5 @@
 #version 330 core
-// The runner's texel pass (common/texel_density.hpp): per pixel, the map's texels one screen
+// The runner's texel pass (common/math/texel_density.hpp): per pixel, the map's texels one screen
 // pixel spans, from the screen-space derivatives of the map coordinates times the map's size:
 // the singular values of that 2x2 Jacobian, along the least and the most sampled direction.
 // TEXEL_HEATMAP 1: the `aliasing` view (red under-sampled, blue over-sampled, green one texel

@@ -1,6 +1,6 @@
 // The browser's truth seam, end to end under node: this program is built with emscripten
 // (no Embree), reads a job a native lesson wrote, traces it through makeTruthTracer
-// (common/truth_job_web.cpp: the job's bytes handed to web/truth's JavaScript, the trace's
+// (common/truth/truth_job_web.cpp: the job's bytes handed to web/truth's JavaScript, the trace's
 // bytes back) and writes the trace; web/truth/seam_test.mjs compares it with Embree's and
 // feeds it to the lesson's --truth-from.
 //   truth_seam JOB TRACE
@@ -9,7 +9,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "truth_job.hpp"
+#include "truth/truth_job.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 3) {

@@ -6,7 +6,7 @@
 // the error numbers of both come from the same C++ metrics. Passes when the visibility is
 // equal on >= 99.9 % of counted pixels (either tracer's), the air light on as many lit
 // pixels, and every error number agrees within 0.05 points.
-// With --seam SEAM.cjs the job goes through the browser's seam instead (common/truth_job_web.cpp
+// With --seam SEAM.cjs the job goes through the browser's seam instead (common/truth/truth_job_web.cpp
 // built with emscripten as tests/web/truth_seam.cpp: C++ hands the job's bytes to truth.mjs and
 // takes the trace back), the path a page takes.
 //   node web/truth/agreement_test.mjs BUILD_DIR LESSON [--size WxH] [--seam SEAM.cjs]

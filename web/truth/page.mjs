@@ -1,4 +1,4 @@
-// The JavaScript half of common/truth_job_web.cpp: installs the tracers the wasm runner calls.
+// The JavaScript half of common/truth/truth_job_web.cpp: installs the tracers the wasm runner calls.
 // A page calls installTruth(Module) before the lesson's script runs (web/shell.html).
 //  - Module.shadowsPostTruthJob(bytes) / shadowsTakeTruthTrace(): Web Workers (worker.mjs),
 //    one a core, trace the job in bands of rows while frames go on; the window loop posts a

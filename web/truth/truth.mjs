@@ -1,6 +1,6 @@
 // The ray-traced truth for a browser (and node): the job the native runner writes
 // (common/truth_job.*) traced with three-mesh-bvh instead of Embree. The rays are the native
-// tracer's (common/truth.cpp, air_truth.cpp, sample_hash.hpp): the same origins and offsets,
+// tracer's (common/truth/truth.cpp, air_truth.cpp, sample_hash.hpp): the same origins and offsets,
 // the same area-light samples, the same air integration, in the same float32 arithmetic
 // (Math.fround where C++ rounds to float). Intersections are three-mesh-bvh's; the metrics
 // stay in C++ (error_metrics.cpp), fed with what traceTruth() returns.
@@ -15,7 +15,7 @@ const NOT_COUNTED = -1;
 const PI = f(Math.PI);
 const ONE_SHORT = f(1 - f(1e-4)); // a finite light's rays stop this short of it
 
-// ---- the job's bytes (common/truth_job.cpp, web/truth/README.md) ----
+// ---- the job's bytes (common/truth/truth_job.cpp, web/truth/README.md) ----
 
 // A job from its bytes: an ArrayBuffer, or a typed array viewing one (a wasm heap slice).
 export function parseJob(bytes) {

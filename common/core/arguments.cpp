@@ -1,0 +1,73 @@
+#include "core/arguments.hpp"
+
+#include <algorithm>
+
+#include "core/text.hpp"
+
+namespace shadows {
+
+bool Arguments::value(std::string& out) {
+  out.clear();
+  if (i_ + 1 >= argc_) return false;
+  out = argv_[++i_];
+  return true;
+}
+
+bool parsePositive(const std::string& text, int& out, int max) {
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos) return false;
+  // Leading zeros are the same number, for every flag ("00064", "00001").
+  const std::string digits = text.substr(std::min(text.find_first_not_of('0'), text.size() - 1));
+  if (digits.size() > 9) return false;
+  const int n = std::stoi(digits);
+  if (n < 1 || n > max) return false;
+  out = n;
+  return true;
+}
+
+std::string readCount(Arguments& args, int& out, int max) {
+  std::string value;
+  if (!args.value(value) || !parsePositive(value, out, max)) {
+    return args.flag() + ": expected a whole number in 1.." + std::to_string(max) + ", got '" +
+           value + "'";
+  }
+  return {};
+}
+
+std::string readIndex(Arguments& args, int& out, int max) {
+  std::string value;
+  const bool digits = args.value(value) && !value.empty() && value.size() <= 9 &&
+                      value.find_first_not_of("0123456789") == std::string::npos;
+  if (!digits || std::stoi(value) > max) {
+    return args.flag() + ": expected a whole number in 0.." + std::to_string(max) + ", got '" +
+           value + "'";
+  }
+  out = std::stoi(value);
+  return {};
+}
+
+std::string readSize(Arguments& args, int& width, int& height, int minSide) {
+  constexpr int kMaxSide = 8192;
+  std::string value;
+  const auto x = args.value(value) ? value.find('x') : std::string::npos;
+  int w = 0, h = 0;
+  if (x == std::string::npos || !parsePositive(value.substr(0, x), w, kMaxSide) ||
+      !parsePositive(value.substr(x + 1), h, kMaxSide) || w < minSide || h < minSide) {
+    return args.flag() + ": expected WxH with W and H in " + std::to_string(minSide) + ".." +
+           std::to_string(kMaxSide) + ", got '" + value + "'";
+  }
+  width = w, height = h;
+  return {};
+}
+
+std::string readSet(Arguments& args, std::vector<std::string>& sets) {
+  std::string value;
+  if (!args.value(value)) return args.flag() + ": expected name=value";
+  sets.push_back(value);
+  return {};
+}
+
+std::string unknownOption(const std::string& arg) {
+  return "unknown option '" + printable(arg) + "'; see --help";
+}
+
+}  // namespace shadows

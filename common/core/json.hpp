@@ -1,0 +1,112 @@
+// A small streaming JSON writer for reports: enough for objects, arrays, numbers, strings.
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/text.hpp"
+
+namespace shadows {
+
+// A figure over no pixel: NaN, which a report writes as null (never a zero that reads "none").
+inline constexpr double kNoFigure = std::numeric_limits<double>::quiet_NaN();
+
+class JsonWriter {
+ public:
+  JsonWriter& beginObject(const std::string& key = {}) { return open(key, '{'); }
+  JsonWriter& endObject() { return close('}'); }
+  JsonWriter& beginArray(const std::string& key = {}) { return open(key, '['); }
+  JsonWriter& endArray() { return close(']'); }
+  JsonWriter& value(const std::string& key, double v) {
+    item(key);
+    if (!std::isfinite(v)) {
+      out_ += "null";  // JSON has no NaN; a non-finite number reads as null
+    } else {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.6g", v);
+      out_ += buf;
+    }
+    return *this;
+  }
+  JsonWriter& value(const std::string& key, long long v) {
+    item(key);
+    out_ += std::to_string(v);
+    return *this;
+  }
+  JsonWriter& value(const std::string& key, int v) { return value(key, static_cast<long long>(v)); }
+  JsonWriter& value(const std::string& key, bool v) {
+    item(key);
+    out_ += v ? "true" : "false";
+    return *this;
+  }
+  JsonWriter& value(const std::string& key, const std::string& v) {
+    item(key);
+    out_ += quote(v);
+    return *this;
+  }
+  JsonWriter& value(const std::string& key, const char* v) { return value(key, std::string(v)); }
+  // A number this context cannot count (Caps): null, never a wrong number.
+  JsonWriter& value(const std::string& key, const std::optional<long long>& v) {
+    if (v) return value(key, *v);
+    item(key);
+    out_ += "null";
+    return *this;
+  }
+  const std::string& str() const { return out_; }
+
+  // A JSON string. Bytes that are not UTF-8 (a file name in another encoding) cannot be
+  // JSON text: each is written as the four characters \xNN, as printable() shows it.
+  static std::string quote(const std::string& s) {
+    std::string q = "\"";
+    for (size_t i = 0; i < s.size();) {
+      const auto c = static_cast<unsigned char>(s[i]);
+      const size_t length = utf8SequenceLength(s, i);
+      char buf[8];
+      if (c == '"' || c == '\\') {
+        q += '\\';
+        q += static_cast<char>(c);
+      } else if (c < 0x20) {
+        std::snprintf(buf, sizeof buf, "\\u%04x", c);
+        q += buf;
+      } else if (length == 0) {
+        std::snprintf(buf, sizeof buf, "\\\\x%02X", c);
+        q += buf;
+      } else {
+        q.append(s, i, length);
+        i += length;
+        continue;
+      }
+      ++i;
+    }
+    return q + "\"";
+  }
+
+ private:
+  JsonWriter& open(const std::string& key, char bracket) {
+    item(key);
+    out_ += bracket;
+    first_.push_back(true);
+    return *this;
+  }
+  JsonWriter& close(char bracket) {
+    first_.pop_back();
+    out_ += '\n' + std::string(2 * first_.size(), ' ') + bracket;
+    return *this;
+  }
+  void item(const std::string& key) {
+    if (!first_.empty()) {
+      if (!first_.back()) out_ += ',';
+      first_.back() = false;
+      out_ += '\n' + std::string(2 * first_.size(), ' ');
+    }
+    if (!key.empty()) out_ += quote(key) + ": ";
+  }
+  std::string out_;
+  std::vector<bool> first_;
+};
+
+}  // namespace shadows

@@ -1,0 +1,92 @@
+#include "gl/caps.hpp"
+
+#include "gl/gl_api.hpp"
+
+namespace shadows {
+
+namespace {
+
+// What the build's API allows at most; loadGl keeps what the context really has.
+Caps ceiling() {
+  Caps c;
+#if SHADOWS_GLES && defined(__EMSCRIPTEN__)
+  c.flavour = "webgl2";  // the gles30 flavour in a browser: what a page says is missing
+  c.es = true;
+  c.glsl_version = 300;
+#elif SHADOWS_GLES
+  c.flavour = "gles30";
+  c.es = true;
+  c.glsl_version = 300;
+#elif SHADOWS_GL_VERSION == 410
+  c.flavour = "gl41";
+  c.glsl_version = 410;
+#else
+  c.flavour = "gl45";
+  c.glsl_version = 450;
+#endif
+  return c;
+}
+
+Caps g_caps = ceiling();
+
+#ifdef __EMSCRIPTEN__
+extern "C" void* emscripten_webgl1_get_proc_address(const char* name);
+extern "C" void* emscripten_webgl2_get_proc_address(const char* name);
+// WebGL 2's entry points before WebGL 1's: emscripten's GetProcAddress (GLFW's) asks WebGL 1
+// first, which answers glGenQueries with EXT_disjoint_timer_query's, absent from WebGL 2.
+GLADapiproc webgl2First(const char* name) {
+  void* f = emscripten_webgl2_get_proc_address(name);
+  return reinterpret_cast<GLADapiproc>(f != nullptr ? f : emscripten_webgl1_get_proc_address(name));
+}
+#endif
+
+}  // namespace
+
+const Caps& caps() {
+  return g_caps;
+}
+
+bool loadGl(GLADloadfunc load) {
+  Caps c = ceiling();
+#if SHADOWS_GLES
+#ifdef __EMSCRIPTEN__
+  load = webgl2First;
+#endif
+  if (gladLoadGLES2(load) == 0) return false;
+  // Nothing optional but what WebGL 2 offers too: errors through KHR_debug where it is there,
+  // float colour targets (the truth's read backs) through EXT_color_buffer_float. Border clamp
+  // and clip distances, which Mesa's ES has as extensions and WebGL does not, are emulated.
+  c.debug_output = GLAD_GL_KHR_debug != 0;
+  c.float_color_targets = GLAD_GL_EXT_color_buffer_float != 0;
+#ifndef __EMSCRIPTEN__
+  c.texture_swizzle = true;  // ES 3.0 has it; WebGL 2 left it out
+#endif
+#else
+  if (gladLoadGL(load) == 0) return false;
+  c.samples_passed = c.texture_1d = c.border_clamp = c.clip_distance = true;
+  c.depth_readback = c.float_color_targets = c.texture_swizzle = true;
+  c.depth_clamp = GLAD_GL_VERSION_3_2 != 0;
+  c.pipeline_statistics = GLAD_GL_ARB_pipeline_statistics_query != 0;
+  c.debug_output = GLAD_GL_KHR_debug != 0;
+#if SHADOWS_GL_VERSION >= 430
+  c.storage_buffers = GLAD_GL_VERSION_4_3 != 0;
+  c.early_fragment_tests = GLAD_GL_VERSION_4_2 != 0;
+#endif
+#endif
+  g_caps = c;
+  return true;
+}
+
+std::vector<std::string> Caps::shaderDefines() const {
+  const auto line = [](const char* name, bool on) {
+    return std::string(name) + (on ? " 1" : " 0");
+  };
+  return {line("SHADOWS_GLES", es),
+          line("HAS_TEXTURE_1D", texture_1d),
+          line("HAS_BORDER_CLAMP", border_clamp),
+          line("HAS_CLIP_DISTANCE", clip_distance),
+          line("HAS_EARLY_FRAGMENT_TESTS", early_fragment_tests),
+          line("HAS_STORAGE_BUFFERS", storage_buffers)};
+}
+
+}  // namespace shadows

@@ -1,0 +1,103 @@
+// Timing and work counters. Wall time bracketed by glFinish (llvmpipe's GL_TIME_ELAPSED is
+// wrong by orders of magnitude); fragment-shader invocations from
+// GL_ARB_pipeline_statistics_query; draw calls counted by Mesh::draw and friends.
+#pragma once
+
+#include <chrono>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "gl/gl.hpp"
+
+namespace shadows {
+
+struct PassWork {
+  long long draw_calls = 0;
+  // llvmpipe counts every rasterized fragment here, before the depth test, early or not.
+  // Empty where the context cannot count them (Caps::pipeline_statistics).
+  std::optional<long long> fragment_invocations;
+  // GL_SAMPLES_PASSED, for passes that ask: the fragments that passed the depth test; with
+  // the tests early, the only ones whose shading ran. Empty where the context has no counting
+  // occlusion queries (OpenGL ES).
+  bool counts_passed = false;
+  std::optional<long long> fragments_passed;
+};
+
+// Every draw the lessons issue goes through here, so passes can count them.
+void countDrawCall();
+long long drawCallsSoFar();
+
+class Measure {
+ public:
+  Measure();
+  // When off (the runner's own truth renders), nothing is timed or counted.
+  void setEnabled(bool enabled) { enabled_ = enabled; }
+  bool enabled() const { return enabled_; }
+
+  void beginFrame();
+  void endFrame();  // glFinish, then the frame's wall time
+
+  class Pass {
+   public:
+    Pass(Measure* owner, std::string name, bool countPassed);
+    Pass(Pass&&) = delete;
+    ~Pass();
+
+   private:
+    Measure* owner_;
+    std::string name_;
+    std::chrono::steady_clock::time_point start_;
+    long long draws_at_start_ = 0;
+    bool count_passed_ = false;
+  };
+  // RAII: `auto timing = measure.pass("shadow");` around one pass. With `countPassed` it also
+  // counts fragments_passed (a pass that runs its own GL_SAMPLES_PASSED query must not).
+  [[nodiscard]] Pass pass(const std::string& name, bool countPassed = false) {
+    return Pass(enabled_ ? this : nullptr, name, countPassed);
+  }
+
+  // An event counter for this frame, e.g. "shadow_map_renders". An empty amount is a number
+  // this context cannot count: the report says null, "unavailable on <flavour>".
+  void count(const std::string& name, long long amount = 1);
+  void count(const std::string& name, std::optional<long long> amount);
+
+  // Drop everything recorded so far (after the warm-up frame).
+  void clearHistory();
+  double medianFrameMs() const;
+  size_t timedFrames() const { return frame_ms_.size(); }
+  std::map<std::string, double> medianPassMs() const;
+  const std::map<std::string, PassWork>& lastFrameWork() const { return last_work_; }
+  // The work of a pass that already ended in the frame in progress (null if none, or when
+  // measuring is off): a lesson can derive counters from it.
+  const PassWork* frameWork(const std::string& pass) const {
+    const auto it = work_.find(pass);
+    return enabled_ && it != work_.end() ? &it->second : nullptr;
+  }
+  const std::map<std::string, long long>& lastFrameCounts() const { return last_counts_; }
+  // The counters of the last frame this context could not count (pass work included).
+  const std::set<std::string>& lastFrameUnavailable() const { return last_unavailable_; }
+  // The shader variants the frame ran (ProgramVariants::takeUsed), kept like the counts.
+  void variants(std::vector<std::string> used) { variants_ = std::move(used); }
+  const std::vector<std::string>& lastFrameVariants() const { return last_variants_; }
+  double lastFrameMs() const { return frame_ms_.empty() ? 0.0 : frame_ms_.back(); }
+
+ private:
+  bool enabled_ = true;
+  GlName<deleteQuery> query_, passed_query_;
+  std::chrono::steady_clock::time_point frame_start_;
+  std::vector<double> frame_ms_;
+  std::map<std::string, std::vector<double>> pass_ms_;
+  std::map<std::string, PassWork> work_, last_work_;
+  std::map<std::string, long long> counts_, last_counts_;
+  std::set<std::string> unavailable_, last_unavailable_;
+  std::vector<std::string> variants_, last_variants_;
+};
+
+double median(std::vector<double> values);
+// A count as the panel says it: the number, or "unavailable on <flavour>".
+std::string countText(const std::optional<long long>& count);
+
+}  // namespace shadows

@@ -1,0 +1,265 @@
+// The ImGui panel: the lesson's sliders, cost and error, in foldable sections.
+#include "run/runner.hpp"
+
+#include "run/runner_gpu.hpp"
+#include "truth/truth_job.hpp"
+
+#include "core/json.hpp"
+#include "gl/context.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <map>
+
+namespace shadows {
+
+std::string Runner::costSummary() const {
+  // The report's numbers (median of the timed frames so far), so panel and report agree.
+  const size_t frames = measure_->timedFrames();
+  if (frames == 0) return "frame: measuring...";
+  char line[96];
+  std::snprintf(line, sizeof line, "frame %.2f ms (median of %zu)", measure_->medianFrameMs(),
+                frames);
+  std::string summary = line;
+  if (const double overhead = shadowOverhead(); overhead > 0.0) {
+    std::snprintf(line, sizeof line, "\nshadow: %.2fx the frame without it (%.2f ms)", overhead,
+                  baseline_measure_->medianFrameMs());
+    summary += line;
+  }
+  return summary;
+}
+
+std::string Runner::counterSummary() const {
+  std::string counts;
+  for (const auto& [name, count] : measure_->lastFrameCounts()) {
+    counts += (counts.empty() ? "" : ", ") + name + " " + std::to_string(count);
+  }
+  for (const std::string& name : measure_->lastFrameUnavailable()) {
+    counts += (counts.empty() ? "" : ", ") + name + " " + caps().unavailable();
+  }
+  return counts;
+}
+
+std::string Runner::truthUnavailable() {
+  if (!kHaveTruth) return std::string(kNoTruthNote) + ": the truth and error views are empty";
+  if (!truthTracerAvailable()) {
+    return "the page could not load its ray tracer (web/truth): the truth and error views are "
+           "empty";
+  }
+  return "";
+}
+
+bool Runner::panelDue(int width, int height) {
+  Gpu& g = *gpu_;
+  glm::dvec2 cursor;
+  glfwGetCursorPos(g.window, &cursor.x, &cursor.y);
+  bool down = false;
+  for (int b = GLFW_MOUSE_BUTTON_1; b <= GLFW_MOUSE_BUTTON_3; ++b) {
+    down = down || glfwGetMouseButton(g.window, b) == GLFW_PRESS;
+  }
+  const auto now = std::chrono::steady_clock::now();
+  // A wheel turn waits in ImGui's io until a panel frame takes it (the orbit camera reads it
+  // from there too); typing into a field wants every frame.
+  const bool due =
+      g.panel_draws < 3 || g.panel_color.width() != width || g.panel_color.height() != height ||
+      cursor != g.cursor || down || down != g.buttons_down || g.panel_typing || g.panel_input ||
+      ImGui::GetIO().MouseWheel != 0.0f || now - g.panel_drawn > std::chrono::milliseconds(250);
+  g.cursor = cursor;
+  g.buttons_down = down;
+  return due;
+}
+
+void Runner::drawPanelTexture(int width, int height) {
+  Gpu& g = *gpu_;
+  if (g.panel_color.width() != width || g.panel_color.height() != height) {
+    g.panel_color = Texture::color(width, height, GL_RGBA8);
+    g.panel_target = std::make_unique<Framebuffer>();
+    g.panel_target->attachColor(g.panel_color);
+    g.panel_target->check();
+  }
+  if (g.panel_over.id() == 0) {
+    g.panel_over =
+        Program(commonShaderDir() / "fullscreen.vert", commonShaderDir() / "panel_over.frag");
+  }
+  g.panel_target->bind();
+  glViewport(0, 0, width, height);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  const ImDrawData* data = ImGui::GetDrawData();
+  ImGui_ImplOpenGL3_RenderDrawData(const_cast<ImDrawData*>(data));
+  // Where it drew, in framebuffer pixels (ImGui's y points down, GL's up, and a scaled
+  // display has more pixels than window units): the only pixels to lay over the frame.
+  glm::vec2 lo(1e9f), hi(-1e9f);
+  const glm::vec2 origin(data->DisplayPos.x, data->DisplayPos.y);
+  const glm::vec2 scale(data->FramebufferScale.x, data->FramebufferScale.y);
+  for (int l = 0; l < data->CmdListsCount; ++l) {
+    for (const ImDrawVert& v : data->CmdLists[l]->VtxBuffer) {
+      const glm::vec2 p = (glm::vec2(v.pos.x, v.pos.y) - origin) * scale;
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  }
+  const glm::ivec2 a = glm::clamp(glm::ivec2(glm::floor(lo)), glm::ivec2(0), {width, height});
+  const glm::ivec2 b = glm::clamp(glm::ivec2(glm::ceil(hi)), glm::ivec2(0), {width, height});
+  g.panel_box =
+      b.x > a.x && b.y > a.y ? glm::ivec4(a.x, height - b.y, b.x - a.x, b.y - a.y) : glm::ivec4(0);
+  g.panel_drawn = std::chrono::steady_clock::now();
+  g.panel_typing = ImGui::GetIO().WantTextInput;
+  g.panel_input = false;
+  ++g.panel_draws;
+}
+
+void Runner::laySavedPanel(const Frame& frame) {
+  const Gpu& g = *gpu_;
+  if (g.panel_box.z == 0) return;
+  frame.bindTarget();
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(g.panel_box.x, g.panel_box.y, g.panel_box.z, g.panel_box.w);
+  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // the texture's colour carries its alpha
+  g.panel_color.bind(0);
+  g.panel_over.set("uPanel", 0);
+  g.panel_over.use();
+  glBindVertexArray(g.empty_vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_BLEND);
+  glEnable(GL_DEPTH_TEST);
+}
+
+void Runner::drawPanel(Frame& frame) {
+  // Narrow, in the top-left corner, in sections that fold away; folded whole on small
+  // pictures, where it would hide everything.
+  const float width = std::min(300.0f, 0.45f * static_cast<float>(frame.width));
+  ImGui::SetNextWindowPos(ImVec2(6, 6), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(width, static_cast<float>(frame.height) - 12),
+                           ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowCollapsed(frame.width < 600, ImGuiCond_FirstUseEver);
+  ImGui::Begin(name_.c_str());
+  ImGui::PushItemWidth(-ImGui::GetFontSize() * 8.5f);  // room for the longest labels
+  ImGui::TextWrapped("%s", lesson_->title().c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", lesson_->seeds().c_str());
+  ImGui::PopStyleColor();
+  // The two answers every lesson gives, where no scrolling hides them: how wrong, what it costs.
+  if (options_.truth) {
+    if (error_.valid && error_.metrics.counted_pixels == 0) {
+      ImGui::TextWrapped("error: none counted (%s)", notCountedReason(error_.metrics).c_str());
+    } else if (error_.valid) {
+      ImGui::TextWrapped("error: false shadow %.2f%%, false lit %.2f%%",
+                         error_.metrics.false_shadow_pct, error_.metrics.false_lit_pct);
+    } else {
+      ImGui::TextDisabled("error: measuring...");
+    }
+  }
+  // Where no technique's answer is defined, the panel says so before its numbers.
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.2f, 1.0f));
+  if (const std::string on = lightOnSurface(); !on.empty()) {
+    ImGui::TextWrapped(
+        "the light sits on the %s's surface: its faces there lie edge-on to it, "
+        "and shadows near it are undefined",
+        on.c_str());
+  }
+  if (error_.valid && error_.metrics.grazing_pixels > error_.metrics.counted_pixels) {
+    ImGui::TextWrapped("the light grazes most surfaces seen (N.L < %g): those are not counted",
+                       static_cast<double>(kGrazingNdotL));
+  }
+  ImGui::PopStyleColor();
+  if (texel_stats_ && texel_stats_->pixels == 0) {
+    ImGui::TextWrapped("texels per pixel: none counted (no pixel seen lies in the map)");
+  } else if (texel_stats_) {
+    ImGui::TextWrapped("texels per pixel: median %.2f (least axis), %.1f%% under-sampled%s",
+                       texel_stats_->min_axis.median, texel_stats_->undersampled_pct,
+                       texel_key_ == errorKey() ? "" : " (stale)");
+  }
+  if (const double overhead = shadowOverhead(); overhead > 0.0) {
+    ImGui::Text("cost: %.2fx the frame without shadow", overhead);
+  }
+  params_.drawWidgets([](const Param& p) { return p.name == "view" || p.name == "scene"; });
+  if (ImGui::Button("Screenshot (F12)")) screenshot_requested_ = true;
+
+  const auto shared = [](const Param& p) {
+    return p.name == "view" || p.name == "scene" || p.name.rfind("light.", 0) == 0 ||
+           p.name.rfind("camera.", 0) == 0;
+  };
+  if (ImGui::CollapsingHeader("Technique", ImGuiTreeNodeFlags_DefaultOpen)) {
+    params_.drawWidgets([&](const Param& p) { return !shared(p); });
+    lesson_->panel(frame);
+  }
+  if (ImGui::CollapsingHeader("Light and camera", ImGuiTreeNodeFlags_DefaultOpen)) {
+    params_.drawWidgets([](const Param& p) {
+      return p.name.rfind("light.", 0) == 0 || p.name.rfind("camera.", 0) == 0;
+    });
+  }
+  if (ImGui::CollapsingHeader("Cost", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::TextWrapped("%s", costSummary().c_str());
+    // One line per pass ever run, so widgets never jump around.
+    const auto& work = measure_->lastFrameWork();
+    for (const auto& [pass, ms] : measure_->medianPassMs()) {
+      const auto it = work.find(pass);
+      if (it == work.end()) {
+        ImGui::Text("  %-8s skipped this frame", pass.c_str());
+      } else {
+        ImGui::Text("  %-8s %6.2f ms %2lld draws", pass.c_str(), ms, it->second.draw_calls);
+        if (it->second.fragment_invocations) {
+          ImGui::TextDisabled("           %lld fragments", *it->second.fragment_invocations);
+        } else {
+          ImGui::TextDisabled("           fragments %s", caps().unavailable().c_str());
+        }
+      }
+    }
+    ImGui::TextWrapped("%s", counterSummary().c_str());
+  }
+  if (!haveTruth() && ImGui::CollapsingHeader("Error", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::TextWrapped("%s", truthUnavailable().c_str());
+  }
+  if (haveTruth() && options_.truth &&
+      ImGui::CollapsingHeader("Error", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (errorMeasureRunning() && errorMeasureProgress() >= 0.0) {
+      // A page's worker takes seconds; natively the truth is there before this shows.
+      ImGui::TextDisabled("tracing the truth: %.0f%%", 100.0 * errorMeasureProgress());
+    }
+    if (error_.valid) {
+      const ErrorMetrics& e = error_.metrics;
+      if (e.counted_pixels == 0) {
+        ImGui::TextWrapped("No pixel counted: %s (is the eye inside an object?)",
+                           notCountedReason(e).c_str());
+      } else {
+        ImGui::TextWrapped("false shadow %.3f%%  false lit %.3f%%", e.false_shadow_pct,
+                           e.false_lit_pct);
+        ImGui::TextWrapped("vis_mae %.4f  non-finite %lld  counted %lld%s", e.vis_mae,
+                           e.nonfinite_pixels, e.counted_pixels,
+                           error_key_ == errorKey() ? "" : "  (stale: updating)");
+      }
+      if (e.air.valid && !e.air.note.empty()) {
+        ImGui::TextWrapped("air: 0 (%s)", e.air.note.c_str());
+      } else if (e.air.valid && !e.air.rel_rmse_note.empty()) {
+        ImGui::TextWrapped("air: mae %.4f  rel. RMSE: none (%s)", e.air.mae,
+                           e.air.rel_rmse_note.c_str());
+      } else if (e.air.valid) {
+        ImGui::TextWrapped("air: mae %.4f  rel. RMSE %.1f%% (truth mean %.3f, noise %.4f)",
+                           e.air.mae, 100.0 * e.air.rel_rmse, e.air.truth_mean, e.air.truth_noise);
+      }
+    } else if (truth_failed_ && error_key_ == errorKey()) {
+      ImGui::TextWrapped("the ray tracer failed: the browser's console says why");
+    } else {
+      ImGui::TextDisabled("not measured yet");
+    }
+  }
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+}  // namespace shadows

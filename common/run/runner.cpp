@@ -1,0 +1,439 @@
+#include "run/runner.hpp"
+
+#include "run/runner_gpu.hpp"
+
+#include "core/json.hpp"
+#include "gl/context.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <map>
+
+namespace shadows {
+
+// ---------------------------------------------------------------- lesson registry
+
+namespace {
+std::map<std::string, LessonFactory>& registry() {
+  static std::map<std::string, LessonFactory> lessons;
+  return lessons;
+}
+}  // namespace
+
+LessonRegistrar::LessonRegistrar(const std::string& name, LessonFactory factory) {
+  registry()[name] = std::move(factory);
+}
+
+std::unique_ptr<Lesson> makeLesson(const std::string& name) {
+  auto it = registry().find(name);
+  if (it == registry().end()) throw std::invalid_argument("no lesson named " + name);
+  return it->second();
+}
+
+std::vector<std::string> registeredLessons() {
+  std::vector<std::string> names;
+  for (const auto& [name, factory] : registry()) names.push_back(name);
+  return names;
+}
+
+// ---------------------------------------------------------------- Runner
+
+Runner::Runner(const std::string& lessonName, std::unique_ptr<Lesson> lesson, RunOptions options)
+    : name_(lessonName), lesson_(std::move(lesson)), options_(std::move(options)) {
+  const std::vector<std::string> scenes = lesson_->scenes();
+  params_.addChoice("scene", scenes, scenes.front(),
+                    "scene preset (sets light and camera defaults)", kDirtyScene | kDirtyShadowMap);
+  std::vector<std::string> views = {"shaded", "visibility"};
+  for (const auto& v : lesson_->debugViews()) views.push_back(v);
+  views.push_back("truth");
+  views.push_back("error");
+  params_.addChoice("view", views, "shaded",
+                    "what to show: shaded, the shadow term alone, debug views, the ray-traced "
+                    "truth, or the error against it");
+  lesson_->declare(params_);
+  declareShared();
+  loadScene();
+}
+
+Runner::~Runner() {
+  releaseGl();
+  if (window_) glfwTerminate();
+}
+
+void Runner::declareShared() {
+  // Sliders a lesson has no use for are not offered at all (a slider that does nothing
+  // misleads), and --set rejects them.
+  Params all;
+  declareSharedInto(all);
+  const auto unused = lesson_->unusedSharedParams();
+  for (const Param& p : all.all()) {
+    if (std::find(unused.begin(), unused.end(), p.name) == unused.end()) params_.add(p);
+  }
+}
+
+void Runner::declareSharedInto(Params& params) {
+  constexpr std::uint32_t kLight = kDirtyShadowMap;
+  params.addChoice("light.type", {"spot", "directional"}, "spot",
+                   "spot: perspective frustum; directional: orthographic", kLight);
+  params.addVec3("light.pos", {3, 6, 4}, -50, 50, "light position", kLight);
+  params.addVec3("light.target", {0, 0, 0}, -50, 50, "where the light points", kLight);
+  params.addFloat("light.fov", 60, 5, 160, "spot light field of view, degrees", kLight).inactive =
+      [](const Params& ps) {
+        return ps.at("light.type").is("directional") ? "a directional light has no angle" : "";
+      };
+  params.addFloat("light.extent", 10, 0.5f, 50, "directional: half width of the light box", kLight)
+      .inactive = [](const Params& ps) {
+    return ps.at("light.type").is("spot") ? "a spot light has no box" : "";
+  };
+  // Near and far are the casters' own while shadow.fit is on (lessons with a shadow map).
+  const auto fitted = [](const Params& ps) -> std::string {
+    const Param* fit = ps.find("shadow.fit");
+    return fit != nullptr && fit->b() ? "shadow.fit is on: near and far fit the casters" : "";
+  };
+  params.addFloat("light.near", 1, 0.001f, 100, "light frustum near plane", kLight).logarithmic =
+      true;
+  params.at("light.near").inactive = fitted;
+  params.addFloat("light.far", 20, 0.01f, 1000, "light frustum far plane", kLight).logarithmic =
+      true;
+  params.at("light.far").inactive = fitted;
+  params.addVec3("camera.pos", {0, 4, 8}, -100, 100, "eye position (drag in the window)");
+  params.addVec3("camera.target", {0, 0, 0}, -100, 100, "what the eye looks at");
+  params.addFloat("camera.fov", 45, 10, 120, "eye vertical field of view, degrees");
+}
+
+void Runner::loadScene() {
+  scene_ = makeScene(params_.at("scene").choice());
+  preset_models_.clear();
+  for (const auto& object : scene_.objects) preset_models_.push_back(object.model);
+  const LightSetup& l = scene_.light;
+  params_.setDefaultChoice(params_.at("light.type"), l.directional ? "directional" : "spot");
+  params_.setDefaultVec3(params_.at("light.pos"), l.position);
+  params_.setDefaultVec3(params_.at("light.target"), l.target);
+  const std::pair<const char*, float> frustum[] = {{"light.fov", l.fov},
+                                                   {"light.extent", l.extent},
+                                                   {"light.near", l.near},
+                                                   {"light.far", l.far}};
+  for (const auto& [name, value] : frustum) {
+    if (Param* p = params_.find(name)) params_.setDefaultFloat(*p, value);
+  }
+  params_.setDefaultVec3(params_.at("camera.pos"), scene_.camera.position);
+  params_.setDefaultVec3(params_.at("camera.target"), scene_.camera.target);
+  params_.setDefaultFloat(params_.at("camera.fov"), scene_.camera.fov);
+  params_.consume(kDirtyScene);
+  truth_.reset();
+  if (gpu_) {
+    gpu_->meshes.clear();
+    for (const auto& object : scene_.objects) gpu_->meshes.emplace_back(object.mesh);
+  }
+}
+
+std::string Runner::applySets(const std::vector<std::string>& sets) {
+  // The scene goes first: its preset sets light and camera defaults the others may override.
+  for (const auto& s : sets) {
+    if (s.rfind("scene=", 0) == 0) {
+      if (auto e = params_.assign(s); !e.empty()) return e;
+      loadScene();
+    }
+  }
+  for (const auto& s : sets) {
+    if (s.rfind("scene=", 0) == 0) continue;
+    if (auto e = params_.assign(s); !e.empty()) return e;
+  }
+  return {};
+}
+
+std::string Runner::checkConsistency() const {
+  const Param* near = params_.find("light.near");
+  const Param* far = params_.find("light.far");
+  if (near != nullptr && far != nullptr && near->f() >= far->f()) {
+    return "light.near (" + near->text() + ") must be less than light.far (" + far->text() + ")";
+  }
+  return {};
+}
+
+Light Runner::currentLight() const {
+  const Params& p = params_;
+  Light l;
+  l.directional = p.at("light.type").is("directional");
+  l.position = p.at("light.pos").v();
+  l.target = p.at("light.target").v();
+  const glm::vec3 d = l.target - l.position;
+  l.direction = glm::dot(d, d) > 1e-12f ? glm::normalize(d) : glm::vec3(0, -1, 0);
+  // A lesson that does not offer a frustum slider gets the scene preset's value.
+  auto value = [&](const char* name, float preset) {
+    const Param* param = p.find(name);
+    return param != nullptr ? param->f() : preset;
+  };
+  l.fov = value("light.fov", scene_.light.fov);
+  l.extent = value("light.extent", scene_.light.extent);
+  l.near = value("light.near", scene_.light.near);
+  l.far = value("light.far", scene_.light.far);
+  l.view = lookAtSafe(l.position, l.target);
+  return l;
+}
+
+std::string Runner::lightOnSurface() const {
+  const Light l = currentLight();
+  if (l.directional) return {};
+  return scene_.surfaceAt(l.position, 1e-5f * std::max(scene_.bounds().radius(), 1.0f));
+}
+
+void Runner::initHeadless() {
+  gpu_ = std::make_unique<Gpu>();
+  gpu_->context = createHeadlessContext(
+      options_.backend.empty() ? headlessBackends().front() : options_.backend, options_.device);
+  initGl();
+  if (options_.panel) {
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;
+    initImGuiGl();
+  }
+}
+
+void Runner::initImGuiGl() {
+  ImGui_ImplOpenGL3_Init(caps().es ? "#version 300 es" : "#version 330 core");
+  // The font atlas read NEAREST: its glyphs land on whole pixels, so the panel looks the same
+  // (headless panel pictures byte-identical) and costs a quarter less to draw on llvmpipe.
+  ImGui_ImplOpenGL3_CreateDeviceObjects();
+  glBindTexture(GL_TEXTURE_2D,
+                static_cast<GLuint>(reinterpret_cast<std::intptr_t>(ImGui::GetIO().Fonts->TexID)));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  gpu_->imgui = true;
+}
+
+void Runner::releaseGl() {
+  // GL objects go while their context is still there: the lesson's, the timers', then the
+  // runner's own, the context last (Gpu declares it first, so it is destroyed last).
+  lesson_.reset();
+  measure_.reset();
+  baseline_measure_.reset();
+  gpu_.reset();
+}
+
+void Runner::initGl() {
+  GlErrorLog::install();
+  GlErrorLog::reset();
+  measure_ = std::make_unique<Measure>();
+  baseline_measure_ = std::make_unique<Measure>();
+  const auto dir = commonShaderDir();
+  gpu_->gbuffer = Program(dir / "gbuffer.vert", dir / "gbuffer.frag");
+  gpu_->image = Program(dir / "fullscreen.vert", dir / "image.frag");
+  gpu_->depth_inset = Program(dir / "fullscreen.vert", dir / "depth_inset.frag");
+  gpu_->texel_heatmap =
+      Program(dir / "shadow_coord.vert", dir / "texel_density.frag", {"TEXEL_HEATMAP 1"});
+  gpu_->texel_raw =
+      Program(dir / "shadow_coord.vert", dir / "texel_density.frag", {"TEXEL_HEATMAP 0"});
+  glGenVertexArrays(1, &gpu_->empty_vao);
+  for (const auto& object : scene_.objects) gpu_->meshes.emplace_back(object.mesh);
+  gpu_->ensureTargets(options_.width, options_.height);
+  lesson_->init();
+}
+
+void Runner::setMouse(glm::vec2 position, bool leftDown) {
+  mouse_ = position;
+  mouse_down_ = leftDown;
+}
+
+int Runner::glErrors() const {
+  return GlErrorLog::poll();
+}
+
+void Runner::renderFrame(bool timed) {
+  const GLuint target = window_ ? 0 : gpu_->target->id();
+  int w = options_.width, h = options_.height;
+  if (window_) glfwGetFramebufferSize(gpu_->window, &w, &h);
+  const bool panel = gpu_->imgui && (window_ || options_.panel);
+  renderInto(target, w, h, params_.at("view").choice(), timed, panel);
+  GlErrorLog::poll();
+}
+
+void Runner::renderBaselineFrame() {
+  Param* off = params_.find("shadow.off");
+  const std::string view = params_.at("view").choice();
+  if (off == nullptr || off->b() || view == "truth" || view == "error") return;
+  int w = options_.width, h = options_.height;
+  if (window_) glfwGetFramebufferSize(gpu_->window, &w, &h);
+  gpu_->ensureTargets(w, h);
+  // What the lesson's frame told the runner, and what it has still to do (a dirty map must
+  // still be rendered by the next real frame), survive the baseline frame, exception or not.
+  // A scene reload it has done is not done again.
+  struct Restore {
+    Runner& r;
+    Param& off;
+    std::uint32_t dirty;
+    std::optional<glm::mat4> frustum;
+    float area_radius;
+    std::optional<AirMedium> medium;
+    std::optional<ShadowSampling> sampling;
+    ~Restore() {
+      off.value[0] = 0.0;
+      std::swap(r.measure_, r.baseline_measure_);
+      r.in_baseline_ = false;
+      r.params_.markDirty(dirty & ~kDirtyScene);
+      r.light_frustum_ = frustum;
+      r.truth_area_radius_ = area_radius;
+      r.medium_ = medium;
+      r.shadow_sampling_ = sampling;
+    }
+  } restore{*this,           *off, params_.dirty(), light_frustum_, truth_area_radius_, medium_,
+            shadow_sampling_};
+  std::swap(measure_, baseline_measure_);
+  in_baseline_ = true;
+  off->value[0] = 1.0;  // not through Params::set: nothing is dirtied
+  // The first one compiles the unshadowed variants: not timed. The panel, if shown, is laid
+  // over it as over the lesson's frames (never drawn anew: it takes no input here).
+  const bool panel = gpu_->imgui && (window_ ? !options_.hide_panel : options_.panel);
+  renderInto(gpu_->target->id(), w, h, view, /*timed=*/baseline_frames_++ > 0, panel);
+}
+
+double Runner::shadowOverhead() const {
+  const double base = baseline_measure_ ? baseline_measure_->medianFrameMs() : 0.0;
+  return base > 0.0 ? measure_->medianFrameMs() / base : 0.0;
+}
+
+void Runner::renderInto(GLuint target, int width, int height, const std::string& mode, bool timed,
+                        bool withPanel) {
+  measure_->setEnabled(timed);
+  if (params_.consume(kDirtyScene)) loadScene();
+  Light light;
+  Frame frame(*this, params_, scene_, *measure_, light);
+  // The light and camera as the parameters say now; again after the panel, whose widgets
+  // may move them this very frame (the lesson must draw with what its map is built for).
+  const auto readParams = [&] {
+    light = currentLight();
+    frame.eye = params_.at("camera.pos").v();
+    frame.view = cameraView();
+    frame.projection = cameraProjection(width, height);
+  };
+  readParams();
+  frame.width = width;
+  frame.height = height;
+  frame.target = target;
+  frame.mode = mode;
+  frame.input_moving = input_moving_;
+
+  // In a window the panel is drawn anew only when it may have changed (input, or every
+  // quarter second for its numbers) and laid over the other frames from a texture: ImGui's
+  // thousands of blended triangles cost a CPU rasterizer as much as some lessons' shadows.
+  const bool draw_panel = withPanel && (!window_ || (!in_baseline_ && panelDue(width, height)));
+  if (draw_panel) {
+    ImGuiIO& io = ImGui::GetIO();
+    if (!window_) {
+      io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
+      io.DeltaTime = 1.0f / 60.0f;
+      io.MousePos = ImVec2(mouse_.x, mouse_.y);
+      io.MouseDown[0] = mouse_down_;
+    } else {
+      ImGui_ImplGlfw_NewFrame();
+    }
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui::NewFrame();
+    drawPanel(frame);
+    ImGui::Render();
+    // A widget may have changed the scene, the light, the camera or the view this frame.
+    if (params_.consume(kDirtyScene)) loadScene();
+    readParams();
+    frame.mode = params_.at("view").choice();
+  }
+
+  measure_->beginFrame();
+  frame.bindTarget();
+  resetGlState();  // every lesson starts from the same GL state
+  if (frame.mode == "truth" || frame.mode == "error") {
+    measure_->setEnabled(false);
+#ifndef __EMSCRIPTEN__
+    measureError();
+#else
+    // A page cannot wait seconds for the rays: it shows the last truth measured while its Web
+    // Worker traces the current one, which the window loop starts once the sliders rest (here
+    // instead when the page measures no error otherwise, ?no-truth).
+    if (!options_.truth && error_key_ != errorKey()) beginErrorMeasure();
+#endif
+    measure_->setEnabled(timed);
+    const Image& shown = frame.mode == "truth" ? truth_image_ : error_image_;
+    if (!haveTruth() || shown.rgba.empty())
+      frame.clearTarget(Frame::kNoTruthColor);  // a plain picture; the panel says why
+    showImage(frame, shown);
+  } else {
+    // The texel views are the runner's, drawn over the lesson's shaded frame, whose map
+    // they measure: `aliasing` (offered by map lessons) and `texels` (measureTexels()).
+    const bool texels = frame.mode == "aliasing" || frame.mode == "texels";
+    const std::string texel_mode = frame.mode;
+    if (texels) frame.mode = "shaded";
+    ProgramVariants::takeUsed();  // only this frame's
+    lesson_->render(frame);
+    measure_->variants(ProgramVariants::takeUsed());
+    light_frustum_ = frame.light_view_projection;
+    truth_area_radius_ = frame.truth_area_radius;
+    medium_ = frame.medium;
+    shadow_sampling_ = frame.shadow_sampling;
+    if (texels) {
+      frame.mode = texel_mode;
+      drawTexels(frame, texel_mode == "aliasing");
+    }
+  }
+  if (withPanel && !window_) {
+    frame.bindTarget();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  } else if (withPanel) {
+    if (draw_panel) drawPanelTexture(width, height);
+    laySavedPanel(frame);
+  }
+  measure_->endFrame();
+  measure_->setEnabled(true);
+}
+
+glm::mat4 Runner::cameraView() const {
+  return lookAtSafe(params_.at("camera.pos").v(), params_.at("camera.target").v());
+}
+
+glm::mat4 Runner::cameraProjection(int width, int height) const {
+  const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
+  return glm::perspective(glm::radians(params_.at("camera.fov").f()), aspect, scene_.camera.near,
+                          scene_.eyeFar(params_.at("camera.pos").v()));
+}
+
+void Runner::showImage(const Frame& frame, const Image& image) {
+  if (image.width == 0) return;
+  if (gpu_->shown.width() != image.width || gpu_->shown.height() != image.height) {
+    gpu_->shown = Texture::color(image.width, image.height, GL_RGBA8);
+  }
+  glBindTexture(GL_TEXTURE_2D, gpu_->shown.id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                  image.rgba.data());
+  drawImageInset(frame, gpu_->shown, /*fullscreen=*/true);
+}
+
+void Runner::resetGlState() {
+  PassState{}.apply();
+#if !SHADOWS_GLES
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+#endif
+}
+
+Image Runner::readImage() const {
+  const int w = options_.width, h = options_.height;
+  Image image{w, h, std::vector<std::uint8_t>(static_cast<size_t>(w) * h * 4)};
+  glBindFramebuffer(GL_FRAMEBUFFER, gpu_->target->id());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  return image;
+}
+
+}  // namespace shadows

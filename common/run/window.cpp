@@ -1,0 +1,222 @@
+// The window loop: GLFW, ImGui, the orbit camera, the truth when the sliders rest.
+#include "run/runner.hpp"
+
+#include "run/runner_gpu.hpp"
+
+#include "core/json.hpp"
+#include "gl/context.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <map>
+#include <optional>
+
+namespace shadows {
+
+int Runner::runWindow() {
+  if (!openWindow()) return kNoWindow;
+  while (windowFrame()) {
+  }
+  return closeWindow();
+}
+
+bool Runner::openWindow() {
+  // Until a window is open, GLFW's complaint is kept for the one line run() prints about it;
+  // after that, it is printed as it comes.
+  static std::string* opening_error = &window_error_;
+  opening_error = &window_error_;
+  glfwSetErrorCallback([](int, const char* description) {
+    if (opening_error != nullptr) {
+      *opening_error = description;
+    } else {
+      std::fprintf(stderr, "GLFW: %s\n", printable(description).c_str());
+    }
+  });
+  if (!glfwInit()) {
+    opening_error = nullptr;  // later errors (a headless fallback's) are printed, not kept
+    return false;
+  }
+  window_ = true;
+  setGlfwContextHints();
+  GLFWwindow* window = glfwCreateWindow(
+      options_.width, options_.height, (name_ + ": " + lesson_->title()).c_str(), nullptr, nullptr);
+  if (window == nullptr) {
+    if (window_error_.empty()) window_error_ = std::string("no ") + (contextName() + 2);
+    glfwTerminate();
+    window_ = false;
+    opening_error = nullptr;
+    return false;
+  }
+  opening_error = nullptr;
+  glfwMakeContextCurrent(window);
+#ifndef __EMSCRIPTEN__  // the browser paces frames itself (emscripten_set_main_loop)
+  glfwSwapInterval(1);
+#endif
+  if (!loadGl(glfwGetProcAddress)) throw GlFailure("glad could not load GL");
+  gpu_ = std::make_unique<Gpu>();
+  gpu_->window = window;
+  initGl();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  // Any input since the panel was last drawn asks for it anew (panelDue): these callbacks run
+  // first, then ImGui's, which it chains to them.
+  glfwSetWindowUserPointer(window, gpu_.get());
+  static constexpr auto input = [](GLFWwindow* w) {
+    static_cast<Gpu*>(glfwGetWindowUserPointer(w))->panel_input = true;
+  };
+  glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int, int, int) { input(w); });
+  glfwSetScrollCallback(window, [](GLFWwindow* w, double, double) { input(w); });
+  glfwSetKeyCallback(window, [](GLFWwindow* w, int, int, int, int) { input(w); });
+  glfwSetCharCallback(window, [](GLFWwindow* w, unsigned int) { input(w); });
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  // A Retina display (macOS) has two framebuffer pixels per window unit: the panel's font is
+  // rasterized at that size and drawn at 1/scale, sharp there rather than doubled.
+  int framebuffer_width = 0, window_width = 0, unused_height = 0;
+  glfwGetFramebufferSize(window, &framebuffer_width, &unused_height);
+  glfwGetWindowSize(window, &window_width, &unused_height);
+  const float scale = window_width > 0
+                          ? static_cast<float>(framebuffer_width) / static_cast<float>(window_width)
+                          : 1.0f;
+  if (scale > 1.0f) {
+    ImFontConfig font;
+    font.SizePixels = 13.0f * scale;
+    ImGui::GetIO().Fonts->AddFontDefault(&font);
+    ImGui::GetIO().FontGlobalScale = 1.0f / scale;
+  }
+  initImGuiGl();
+  gpu_->imgui_glfw = true;
+
+  // With an output or --frames, a windowed run renders --frames frames, writes what was asked
+  // for and exits: that is how the tests check the real window path under xvfb.
+  const bool scripted = options_.frames_given || !options_.out.empty() ||
+                        !options_.report.empty() || !options_.truth_out.empty() ||
+                        !options_.error_out.empty() || !options_.truth_job.empty() ||
+                        !options_.truth_result.empty();
+  gpu_->loop.frames_left = scripted ? options_.frames + 1 : -1;
+  gpu_->loop.changed_at = std::chrono::steady_clock::now();
+  return true;
+}
+
+bool Runner::windowFrame() {
+  GLFWwindow* window = gpu_->window;
+  Gpu::WindowLoop& loop = gpu_->loop;
+  if (glfwWindowShouldClose(window) || loop.frames_left == 0) return false;
+  {
+    auto& [last_x, last_y, h_was_down, dragging, changed_at, moved_at, last_key, frames_left,
+           frame_number, outputs_failed] = loop;
+    glfwPollEvents();
+    const ImGuiIO& io = ImGui::GetIO();
+    // Orbit the eye around its target with the left mouse button, zoom with the wheel.
+    double x = 0, y = 0;
+    glfwGetCursorPos(window, &x, &y);
+    const bool down = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    if (down && !io.WantCaptureMouse) {
+      if (dragging) {
+        Param& pos = params_.at("camera.pos");
+        const glm::vec3 target = params_.at("camera.target").v();
+        glm::vec3 offset = pos.v() - target;
+        const float radius = glm::length(offset);
+        float yaw = std::atan2(offset.x, offset.z) - 0.01f * static_cast<float>(x - last_x);
+        float pitch = std::asin(std::clamp(offset.y / std::max(radius, 1e-6f), -1.0f, 1.0f)) +
+                      0.01f * static_cast<float>(y - last_y);
+        pitch = std::clamp(pitch, -1.5f, 1.5f);
+        offset = radius * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
+                                    std::cos(pitch) * std::cos(yaw));
+        params_.setVec3(pos, target + offset);
+      }
+      dragging = true;
+    } else {
+      dragging = false;
+    }
+    last_x = x, last_y = y;
+    if (options_.orbit > 0) {  // a scripted drag: the same turn, without a mouse
+      Param& pos = params_.at("camera.pos");
+      const glm::vec3 target = params_.at("camera.target").v();
+      const glm::vec3 offset = pos.v() - target;
+      params_.setVec3(
+          pos, target + glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(float(options_.orbit)),
+                                              glm::vec3(0.0f, 1.0f, 0.0f)) *
+                                  glm::vec4(offset, 0.0f)));
+    }
+    if (io.MouseWheel != 0.0f && !io.WantCaptureMouse) {
+      Param& pos = params_.at("camera.pos");
+      const glm::vec3 target = params_.at("camera.target").v();
+      params_.setVec3(pos, target + (pos.v() - target) * std::pow(0.9f, io.MouseWheel));
+    }
+    if (glfwGetKey(window, GLFW_KEY_F12) == GLFW_PRESS) screenshot_requested_ = true;
+    // H hides or shows the panel (on the key's press, not while it is held).
+    const bool h_down = glfwGetKey(window, GLFW_KEY_H) == GLFW_PRESS;
+    if (h_down && !h_was_down && !io.WantTextInput) options_.hide_panel = !options_.hide_panel;
+    h_was_down = h_down;
+
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window, &w, &h);
+    if (w > 0 && h > 0) {
+      options_.width = w, options_.height = h;
+      gpu_->ensureTargets(w, h);
+      // The truth is re-measured once the sliders rest. Its rays (a few hundred ms) are traced
+      // on a worker thread while frames go on; only the read-back of what it needs (the
+      // visibility, shaded and geometry passes) takes the render thread.
+      pollErrorMeasure();
+      const std::string key = errorKey();
+      const auto now = std::chrono::steady_clock::now();
+      // Input moves while the key changes (the first frame's key is no move) or a widget is
+      // held; a lesson may draw a cheaper picture then (Frame::input_moving).
+      if (key != last_key) {
+        if (!last_key.empty()) moved_at = now;
+        changed_at = now, last_key = key;
+      }
+      const bool resting = now - changed_at > std::chrono::milliseconds(300);
+      setInputMoving(ImGui::IsAnyItemActive() ||
+                     (moved_at && now - *moved_at <= std::chrono::milliseconds(300)));
+      if (options_.truth && resting && key != error_key_ && !errorMeasureRunning() &&
+          !ImGui::IsAnyItemActive()) {
+        beginErrorMeasure();
+      }
+      // The panel's "shadow: N x the frame without it": one frame in 32 is rendered again,
+      // off-screen, with shadow.off.
+      renderInto(0, w, h, params_.at("view").choice(), true, !options_.hide_panel);
+      // After the frame, so the panel's numbers (drawn first thing in a frame) are the
+      // lesson's, not the baseline's.
+      if (!options_.hide_panel && frame_number++ % 32 == 0) renderBaselineFrame();
+      GlErrorLog::poll();
+      if (screenshot_requested_) {
+        screenshot_requested_ = false;
+        saveScreenshot(w, h, {});
+      }
+      if (frames_left > 0 && --frames_left == 0) {
+        // The same outputs as a headless run: the picture, and the report, truth and error
+        // pictures asked for, all or none.
+        Image image{w, h, std::vector<std::uint8_t>(static_cast<size_t>(w) * h * 4)};
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+        if (options_.truthAsked()) measureError();
+        outputs_failed = !writeOutputs(options_.out, image);
+      }
+    }
+    glfwSwapBuffers(window);
+  }
+  return true;
+}
+
+int Runner::closeWindow() {
+  GLFWwindow* window = gpu_->window;
+  const bool outputs_failed = gpu_->loop.outputs_failed;
+  releaseGl();
+  glfwDestroyWindow(window);
+  return GlErrorLog::count() > 0 || outputs_failed ? 1 : 0;
+}
+
+}  // namespace shadows
