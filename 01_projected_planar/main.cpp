@@ -15,7 +15,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/json.hpp"
-#include "run/runner.hpp"
+#include "lesson/lesson.hpp"
 
 namespace shadows {
 

@@ -12,8 +12,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/image.hpp"
 #include "core/json.hpp"
-#include "run/runner.hpp"
+#include "lesson/lesson.hpp"
 
 namespace shadows {
 

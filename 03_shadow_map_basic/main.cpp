@@ -11,7 +11,7 @@
 #include <cstdio>
 
 #include "core/json.hpp"
-#include "run/runner.hpp"
+#include "lesson/lesson.hpp"
 #include "shadow/shadow_map.hpp"
 
 namespace shadows {

@@ -19,7 +19,7 @@
 #include <cmath>
 
 #include "core/json.hpp"
-#include "run/runner.hpp"
+#include "lesson/lesson.hpp"
 #include "shadow/shadow_map.hpp"
 
 namespace shadows {

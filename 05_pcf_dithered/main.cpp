@@ -20,8 +20,8 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/json.hpp"
+#include "lesson/lesson.hpp"
 #include "pcf_math.hpp"
-#include "run/runner.hpp"
 #include "shadow/shadow_map.hpp"
 
 namespace shadows {

@@ -13,7 +13,7 @@
 #include <imgui.h>
 
 #include "core/json.hpp"
-#include "run/runner.hpp"
+#include "lesson/lesson.hpp"
 #include "shadow/depth_readback.hpp"
 
 namespace shadows {

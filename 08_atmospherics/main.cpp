@@ -13,7 +13,7 @@
 
 #include "core/json.hpp"
 #include "core/spotlight.hpp"
-#include "run/runner.hpp"
+#include "lesson/lesson.hpp"
 #include "shadow/shadow_map.hpp"
 
 namespace shadows {

@@ -18,8 +18,8 @@
 
 #include "core/json.hpp"
 #include "gl/caps.hpp"
+#include "lesson/lesson.hpp"
 #include "math/shadow_volume.hpp"
-#include "run/runner.hpp"
 
 namespace shadows {
 

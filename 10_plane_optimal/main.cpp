@@ -14,8 +14,8 @@
 #include <imgui.h>
 
 #include "core/json.hpp"
+#include "lesson/lesson.hpp"
 #include "math/warped_projection.hpp"
-#include "run/runner.hpp"
 #include "shadow/shadow_map.hpp"
 
 namespace shadows {

@@ -7,7 +7,7 @@
 
 #include <optional>
 
-#include "run/runner.hpp"
+#include "lesson/lesson.hpp"
 
 namespace shadows {
 
