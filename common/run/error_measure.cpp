@@ -1,4 +1,6 @@
-// The lesson's picture against the ray-traced truth: visibility, surfaces, air, metrics.
+// What the truth needs of the GPU, read back on the render thread (the lesson's visibility and
+// shaded picture, the surfaces, 08's air, the texel pass), and the measure run on a thread or a
+// page's worker; truth_measure.cpp traces and compares.
 #include "run/runner.hpp"
 
 #include "core/spotlight.hpp"
@@ -69,26 +71,26 @@ void Runner::drawTexels(const Frame& frame, bool heatmap) {
 
 const std::vector<TexelPixel>* Runner::measureTexels() {
   std::string key = errorKey();
-  if (key != texel_key_) {
+  if (key != texels_.key) {
     const int w = options_.width, h = options_.height;
     gpu_->ensureTargets(w, h);
     const GLuint fbo = gpu_->float_target->id();
-    if (!texel_measure_) texel_measure_ = std::make_unique<Measure>();
-    std::swap(measure_, texel_measure_);
+    if (!texels_.measure) texels_.measure = std::make_unique<Measure>();
+    std::swap(measure_, texels_.measure);
     renderInto(fbo, w, h, "texels", /*timed=*/true, false);
-    std::swap(measure_, texel_measure_);
-    texel_pixels_.clear();
-    texel_stats_.reset();
-    if (shadow_sampling_) {
-      texel_pixels_.resize(static_cast<size_t>(w) * h);
+    std::swap(measure_, texels_.measure);
+    texels_.pixels.clear();
+    texels_.stats.reset();
+    if (told_.shadow_sampling) {
+      texels_.pixels.resize(static_cast<size_t>(w) * h);
       glBindFramebuffer(GL_FRAMEBUFFER, fbo);
       glReadBuffer(GL_COLOR_ATTACHMENT0);
-      glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, texel_pixels_.data());
-      texel_stats_ = texelStats(texel_pixels_);
+      glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, texels_.pixels.data());
+      texels_.stats = texelStats(texels_.pixels);
     }
-    texel_key_ = std::move(key);
+    texels_.key = std::move(key);
   }
-  return texel_stats_ ? &texel_pixels_ : nullptr;
+  return texels_.stats ? &texels_.pixels : nullptr;
 }
 
 std::string Runner::errorKey() const {
@@ -107,22 +109,7 @@ std::string Runner::errorKey() const {
   return key;
 }
 
-// What the truth needs from the GPU, read back on the render thread (a few ms), so that the
-// ray tracing can run anywhere.
-struct Runner::TruthInputs {
-  std::string key;
-  int width = 0, height = 0;
-  std::vector<float> rendered;    // the lesson's visibility view
-  std::vector<glm::vec4> shaded;  // its shaded picture in float (NaN and Inf kept)
-  std::string truth_name;
-  TruthJob job;  // what the tracer traces: surfaces, light, triangles, lesson 08's air
-  std::shared_ptr<const TruthTracer> truth;  // null: build one from the job's triangles
-  std::optional<TruthTrace> given;           // --truth-from: the trace, already made
-  bool keep_bytes = false;                   // --truth-job / --truth-result
-  std::vector<float> air_rendered;           // lesson 08's air light
-};
-
-Runner::TruthInputs Runner::gatherTruthInputs() {
+TruthInputs Runner::gatherTruthInputs() {
   TruthInputs in;
   in.key = errorKey();
   const int w = options_.width, h = options_.height;
@@ -159,8 +146,8 @@ Runner::TruthInputs Runner::gatherTruthInputs() {
   frame.eye = params_.at("camera.pos").v();  // drawn in the order the lesson's eye pass was
   // The very camera the lesson drew with, or truth and picture would not line up.
   gpu_->gbuffer.set("uViewProjection", cameraProjection(w, h) * cameraView());
-  gpu_->gbuffer.set("uHasLightFrustum", light_frustum_ ? 1 : 0);
-  gpu_->gbuffer.set("uLightViewProjection", light_frustum_.value_or(glm::mat4(1.0f)));
+  gpu_->gbuffer.set("uHasLightFrustum", told_.light_frustum ? 1 : 0);
+  gpu_->gbuffer.set("uLightViewProjection", told_.light_frustum.value_or(glm::mat4(1.0f)));
   drawObjects(frame, gpu_->gbuffer, Objects::All, nullptr);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, job.surface.position.data());
@@ -171,28 +158,28 @@ Runner::TruthInputs Runner::gatherTruthInputs() {
   // while the scene stays): a job is whole wherever it is traced.
   scene_.worldTriangles(job.positions, job.triangles);
   job.scene_radius = scene_.bounds().radius();
-  if (truth_ && truth_->sceneId() == job.sceneId()) in.truth = truth_;
-  in.given = given_trace_;
+  in.truth = truth_.tracerFor(job);
+  in.given = truth_.given;
   in.keep_bytes = !options_.truth_job.empty() || !options_.truth_result.empty();
   job.light.position = light.position;
   job.light.direction = light.direction;
   job.light.directional = light.directional;
-  job.light.radius = truth_area_radius_;
+  job.light.radius = told_.truth_area_radius;
   job.light.samples = 64;
   in.truth_name = light.directional ? "directional" : "point";
-  if (truth_area_radius_ > 0.0f) {
+  if (told_.truth_area_radius > 0.0f) {
     char name[64];
-    std::snprintf(name, sizeof name, "area r=%g n=%d", truth_area_radius_, job.light.samples);
+    std::snprintf(name, sizeof name, "area r=%g n=%d", told_.truth_area_radius, job.light.samples);
     in.truth_name = name;
   }
-  if (medium_) {
+  if (told_.medium) {
     // The lesson's air light alone, unscaled, against single scattering traced along the
     // very eye rays of its pixels.
     TruthJob::Air air;
-    air.medium = *medium_;
+    air.medium = *told_.medium;
     air.medium.spot = nullptr;
     // A copy of the spot texture: the lesson may load another while the truth is traced.
-    if (medium_->spot != nullptr) air.spot = *medium_->spot;
+    if (told_.medium->spot != nullptr) air.spot = *told_.medium->spot;
     air.eye = params_.at("camera.pos").v();
     air.inverse_view_projection = glm::inverse(cameraProjection(w, h) * cameraView());
     job.air = std::move(air);
@@ -202,143 +189,38 @@ Runner::TruthInputs Runner::gatherTruthInputs() {
   return in;
 }
 
-Runner::TruthResult Runner::traceTruth(TruthInputs in) {
-#if !SHADOWS_HAVE_TRUTH
-  // This build has no ray tracer: nothing calls this (measureError says so first).
-  (void)in;
-  throw std::logic_error("no ray-traced truth in this build");
-#else
-  TruthResult out;
-  out.key = in.key;
-  const TruthJob& job = in.job;
-  TruthTrace trace;
-  if (in.given) {
-    // Another tracer's answer: only to this very job (the same scene, view, light, size).
-    if (in.given->job_id != job.id()) {
-      throw TruthMismatch(
-          "--truth-from: the trace answers another job (other parameters, "
-          "size or scene); write the job again with --truth-job");
-    }
-    trace = std::move(*in.given);
-    if (trace.width != job.surface.width || trace.height != job.surface.height ||
-        trace.air.has_value() != job.air.has_value()) {
-      throw TruthMismatch("--truth-from: the trace does not fit its job (size or air)");
-    }
-  } else {
-    out.truth = in.truth ? in.truth : makeTruthTracer(job);
-    trace = out.truth->trace(job);
-  }
-  if (in.keep_bytes) {
-    trace.job_id = job.id();
-    out.job_bytes = serializeTruthJob(job);
-    out.trace_bytes = serializeTruthTrace(trace);
-  }
-  const int w = in.width, h = in.height;
-  const size_t n = static_cast<size_t>(w) * h;
-  const std::vector<float>& truth = trace.visibility;
-  long long grazing = 0;
-  const std::vector<float> weight = Truth::facingWeight(job.surface, job.light, &grazing);
-  ErrorMetrics& m = out.metrics;
-  m = compareVisibility(in.rendered, truth, weight);
-  m.grazing_pixels = grazing;
-  // Every surface the eye sees writes its normal, counted or not; the sky keeps the clear 0.
-  m.covered_pixels =
-      std::count_if(job.surface.normal.begin(), job.surface.normal.end(),
-                    [](const glm::vec4& normal) { return glm::dot(normal, normal) > 0.0f; });
-  m.truth = in.truth_name;
-  // Non-finite pixels: where the visibility or any channel of the shaded picture is NaN or
-  // Inf, each pixel counted once.
-  long long nonfinite = 0;
-  std::vector<std::uint8_t> shaded_bytes(n * 4);
-  for (size_t i = 0; i < n; ++i) {
-    bool finite = std::isfinite(in.rendered[i]);
-    for (int c = 0; c < 4; ++c) {
-      const float v = in.shaded[i][c];
-      finite = finite && std::isfinite(v);
-      shaded_bytes[i * 4 + static_cast<size_t>(c)] = static_cast<std::uint8_t>(
-          std::lround(255.0f * std::clamp(std::isfinite(v) ? v : 0.0f, 0.0f, 1.0f)));
-    }
-    if (!finite) ++nonfinite;
-  }
-  m.nonfinite_pixels = nonfinite;
-  out.error_image = {w, h, errorImage(shaded_bytes, in.rendered, truth)};
-  out.pixels = std::make_shared<const ErrorPixels>(
-      ErrorPixels{in.rendered, truth, weight, job.surface.position});
-  out.truth_image = {w, h, std::vector<std::uint8_t>(n * 4)};
-  for (size_t i = 0; i < n; ++i) {
-    // Truth lit white, shadowed black, not counted (no surface, facing away) dark blue.
-    const bool counted = truth[i] >= 0.0f;
-    const auto grey = static_cast<std::uint8_t>(std::lround(255.0f * std::max(truth[i], 0.0f)));
-    out.truth_image.rgba[i * 4 + 0] = counted ? grey : 20;
-    out.truth_image.rgba[i * 4 + 1] = counted ? grey : 24;
-    out.truth_image.rgba[i * 4 + 2] = counted ? grey : 60;
-    out.truth_image.rgba[i * 4 + 3] = 255;
-  }
-  m.air = AirMetrics{};
-  if (trace.air) {
-    // The truth and error views then show the air.
-    out.air = std::move(*trace.air);
-    m.air = compareAir(in.air_rendered, out.air);
-    m.nonfinite_pixels += m.air.nonfinite;
-    out.error_image = {w, h, airErrorImage(in.air_rendered, out.air.light)};
-    for (size_t i = 0; i < out.air.light.size(); ++i) {
-      const auto grey =
-          static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(out.air.light[i], 0.0f, 1.0f)));
-      out.truth_image.rgba[i * 4 + 0] = out.truth_image.rgba[i * 4 + 1] = grey;
-      out.truth_image.rgba[i * 4 + 2] = grey;
-    }
-  }
-  return out;
-#endif
-}
-
-void Runner::installTruth(TruthResult result) {
-  // A truth built for a scene that has changed since is not kept (its key says so).
-  if (result.truth && result.key == errorKey()) truth_ = std::move(result.truth);
-  job_bytes_ = std::move(result.job_bytes);
-  trace_bytes_ = std::move(result.trace_bytes);
-  error_.metrics = std::move(result.metrics);
-  error_.valid = true;
-  error_.pixels = std::move(result.pixels);
-  error_key_ = std::move(result.key);
-  error_image_ = std::move(result.error_image);
-  truth_image_ = std::move(result.truth_image);
-  air_truth_ = std::move(result.air);
-  ++truths_measured_;
-  truth_failed_ = false;
-}
-
 bool Runner::haveTruth() {
   return kHaveTruth && truthTracerAvailable();
 }
 
 const ErrorState& Runner::measureError() {
   if (!haveTruth()) {  // nothing to measure against: the views and the panel say so
-    error_ = {};
-    truth_image_ = error_image_ = {};
-    return error_;
+    truth_.clear();
+    return truth_.error();
   }
-  if (truth_job_.valid()) installTruth(truth_job_.get());  // a window's job: wait for it
+  // A window's job: wait for it.
+  if (truth_.thread_job.valid()) truth_.install(truth_.thread_job.get(), errorKey());
   // A page cannot wait for its worker; its answer, when it comes, answers no job any more.
-  page_job_.reset();
-  if (error_.valid && errorKey() == error_key_) return error_;
-  installTruth(traceTruth(gatherTruthInputs()));
-  return error_;
+  truth_.page_job.reset();
+  if (truth_.current(errorKey())) return truth_.error();
+  TruthResult result = traceTruth(gatherTruthInputs());
+  truth_.install(std::move(result), errorKey());
+  return truth_.error();
 }
 
 #ifndef __EMSCRIPTEN__
 
 void Runner::beginErrorMeasure() {
   if (errorMeasureRunning() || !haveTruth()) return;
-  truth_job_ = std::async(std::launch::async, &Runner::traceTruth, gatherTruthInputs());
+  truth_.thread_job = std::async(std::launch::async, &traceTruth, gatherTruthInputs());
 }
 
 bool Runner::pollErrorMeasure() {
-  if (!truth_job_.valid() ||
-      truth_job_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+  if (!truth_.thread_job.valid() ||
+      truth_.thread_job.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
     return false;
   }
-  installTruth(truth_job_.get());
+  truth_.install(truth_.thread_job.get(), errorKey());
   return true;
 }
 
@@ -352,32 +234,32 @@ void Runner::beginErrorMeasure() {
   if (errorMeasureRunning() || !haveTruth()) return;
   auto inputs = std::make_shared<TruthInputs>(gatherTruthInputs());
   if (postTruthJob(serializeTruthJob(inputs->job))) {
-    page_job_ = std::move(inputs);
+    truth_.page_job = std::move(inputs);
   } else {
-    installTruth(traceTruth(std::move(*inputs)));  // no worker: on this thread, the page waits
+    // No worker: on this thread, the page waits.
+    TruthResult result = traceTruth(std::move(*inputs));
+    truth_.install(std::move(result), errorKey());
   }
 }
 
 bool Runner::pollErrorMeasure() {
-  if (!page_job_) return false;
+  if (!truth_.page_job) return false;
   PageTraceAnswer answer = takeTruthTrace();
   if (answer.state == PageTraceAnswer::State::kNone) return false;
-  std::shared_ptr<TruthInputs> inputs = std::move(page_job_);
+  std::shared_ptr<TruthInputs> inputs = std::move(truth_.page_job);
   if (answer.state == PageTraceAnswer::State::kFailed) {
     // Not again for the same settings (the console says why); the panel says it failed.
-    error_ = {};
-    error_key_ = inputs->key;
-    truth_image_ = error_image_ = {};
-    truth_failed_ = true;
+    truth_.fail(inputs->key);
     return false;
   }
   inputs->given = parseTruthTrace(answer.trace_bytes);
-  installTruth(traceTruth(std::move(*inputs)));
+  TruthResult result = traceTruth(std::move(*inputs));
+  truth_.install(std::move(result), errorKey());
   return true;
 }
 
 double Runner::errorMeasureProgress() const {
-  return page_job_ ? std::max(truthTraceProgress(), 0.0) : -1.0;
+  return truth_.page_job ? std::max(truthTraceProgress(), 0.0) : -1.0;
 }
 
 #endif

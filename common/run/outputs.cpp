@@ -34,9 +34,9 @@ void Runner::writeReport(JsonWriter& json) {
   json.value("renderer", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
   json.value("flavour", caps().flavour);  // the API this build speaks: gl45, gl41 or gles30
   json.value("vendor", reinterpret_cast<const char*>(glGetString(GL_VENDOR)));
-  json.value("backend", window_ ? std::string("window") : HeadlessContext::current());
+  json.value("backend", window_.open ? std::string("window") : HeadlessContext::current());
   // Which EGL device rendered it (--backend egl-device), of how many there were.
-  if (const EglDeviceChoice device = currentEglDevice(); device.index >= 0 && !window_) {
+  if (const EglDeviceChoice device = currentEglDevice(); device.index >= 0 && !window_.open) {
     json.beginObject("device");
     json.value("index", device.index);
     json.value("name", device.name);
@@ -52,8 +52,8 @@ void Runner::writeReport(JsonWriter& json) {
   json.value("light_on_surface", lightOnSurface());
   json.value("frame_ms", measure_->medianFrameMs());
   // What the shadow costs: the same frame with shadow.off, timed in the same run.
-  if (baseline_measure_ && baseline_measure_->timedFrames() > 0) {
-    json.value("baseline_frame_ms", baseline_measure_->medianFrameMs());
+  if (baseline_.measure && baseline_.measure->timedFrames() > 0) {
+    json.value("baseline_frame_ms", baseline_.measure->medianFrameMs());
     json.value("shadow_overhead", shadowOverhead());
   }
   json.beginObject("pass_ms");
@@ -89,12 +89,12 @@ void Runner::writeReport(JsonWriter& json) {
   json.value("shader_variants_compiled", ProgramVariants::compiledTotal() - compiled_at_start_);
   lesson_->report(json);
   if (texels) {
-    const TexelStats& t = *texel_stats_;
+    const TexelStats& t = *texels_.stats;
     writeTexelsPerPixel(json, t);
     json.value("undersampled_pct", t.pixels > 0 ? t.undersampled_pct : kNoFigure);
   }
-  if (error_.valid) {
-    const ErrorMetrics& e = error_.metrics;
+  if (truth_.error().valid) {
+    const ErrorMetrics& e = truth_.error().metrics;
     json.beginObject("error");
     json.value("truth", e.truth);
     // A share of no pixel is no figure: null, and why (a zero would read as "no error").
@@ -120,9 +120,9 @@ void Runner::writeReport(JsonWriter& json) {
     // The lesson's regions, after the whole frame's figures so that a first match of a
     // metric's name is the frame's; only from pixels of this very frame (a window's error may
     // be stale while the lesson's regions are not).
-    if (error_.pixels && error_key_ == errorKey()) {
+    if (truth_.error().pixels && truth_.key() == errorKey()) {
       for (const ErrorRegion& region : lesson_->errorRegions()) {
-        const ErrorMetrics r = compareVisibilityIn(*error_.pixels, region.inside);
+        const ErrorMetrics r = compareVisibilityIn(*truth_.error().pixels, region.inside);
         json.beginObject(region.name);
         json.value("counted_pixels", r.counted_pixels);
         json.value("false_shadow_pct", r.counted_pixels > 0 ? r.false_shadow_pct : kNoFigure);
@@ -138,11 +138,12 @@ void Runner::writeReport(JsonWriter& json) {
 
 void Runner::saveScreenshot(int width, int height, const std::string& file) {
   Image image{width, height, std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 4)};
-  glBindFramebuffer(GL_FRAMEBUFFER, window_ ? 0 : gpu_->target->id());
+  glBindFramebuffer(GL_FRAMEBUFFER, window_.open ? 0 : gpu_->target->id());
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
   const std::string path =
-      file.empty() ? name_ + "_screenshot_" + std::to_string(++screenshots_taken_) + ".png" : file;
+      file.empty() ? name_ + "_screenshot_" + std::to_string(++window_.screenshots_taken) + ".png"
+                   : file;
   if (writePng(path, image)) {
     std::printf("screenshot: %s\n", path.c_str());
   } else {
@@ -153,7 +154,7 @@ void Runner::saveScreenshot(int width, int height, const std::string& file) {
 int Runner::run() {
   if (!options_.truth_from.empty()) {
     try {
-      given_trace_ = readTruthTrace(options_.truth_from);
+      truth_.given = readTruthTrace(options_.truth_from);
     } catch (const std::invalid_argument& e) {
       std::fprintf(stderr, "%s: --truth-from: %s\n", name_.c_str(), printable(e.what()).c_str());
       return 2;
@@ -176,7 +177,7 @@ int Runner::runHeadlessOrWindow() {
   }
   const int result = runWindow();
   if (result != kNoWindow) return result;
-  const std::string why = printable(window_error_.empty() ? "unknown reason" : window_error_);
+  const std::string why = printable(window_.error.empty() ? "unknown reason" : window_.error);
   if (options_.force_window) {
     std::fprintf(stderr, "%s: cannot open a window (%s)\n", name_.c_str(), why.c_str());
     return 1;
@@ -220,7 +221,7 @@ int Runner::runHeadless() {
   // A snapshot with the panel should show the error numbers, so measure them first.
   if (options_.panel && options_.truth) measureError();
   measure_->clearHistory();
-  baseline_measure_->clearHistory();
+  baseline_.measure->clearHistory();
   for (int i = 0; i < options_.frames; ++i) {
     renderBaselineFrame();  // interleaved with the frames it is compared with; first, as the
     renderFrame();          // picture is read from the same target
@@ -242,11 +243,12 @@ int Runner::runHeadless() {
   if (const double overhead = shadowOverhead(); overhead > 0.0) {
     std::printf(", %.2fx without shadow", overhead);
   }
-  if (error_.valid && error_.metrics.counted_pixels == 0) {
-    std::printf("  error: none counted (%s)", notCountedReason(error_.metrics).c_str());
-  } else if (error_.valid) {
-    std::printf("  false shadow %6.2f%%  false lit %5.2f%%", error_.metrics.false_shadow_pct,
-                error_.metrics.false_lit_pct);
+  const ErrorState& error = truth_.error();
+  if (error.valid && error.metrics.counted_pixels == 0) {
+    std::printf("  error: none counted (%s)", notCountedReason(error.metrics).c_str());
+  } else if (error.valid) {
+    std::printf("  false shadow %6.2f%%  false lit %5.2f%%", error.metrics.false_shadow_pct,
+                error.metrics.false_lit_pct);
   }
   std::printf("  gl_errors %d\n", errors);
   if (errors > 0) {
@@ -261,12 +263,12 @@ bool Runner::writeOutputs(const std::string& out, const Image& image) {
   // Every output of the run, or none: a picture without its report is a half answer.
   OutputBatch batch;
   if (!out.empty()) batch.add(out, encodePng(image));
-  if (!options_.truth_out.empty()) batch.add(options_.truth_out, encodePng(truth_image_));
-  if (!options_.error_out.empty()) batch.add(options_.error_out, encodePng(error_image_));
+  if (!options_.truth_out.empty()) batch.add(options_.truth_out, encodePng(truth_.truthImage()));
+  if (!options_.error_out.empty()) batch.add(options_.error_out, encodePng(truth_.errorImage()));
   if (!options_.truth_job.empty())
-    batch.add(options_.truth_job, {job_bytes_.begin(), job_bytes_.end()});
+    batch.add(options_.truth_job, {truth_.jobBytes().begin(), truth_.jobBytes().end()});
   if (!options_.truth_result.empty()) {
-    batch.add(options_.truth_result, {trace_bytes_.begin(), trace_bytes_.end()});
+    batch.add(options_.truth_result, {truth_.traceBytes().begin(), truth_.traceBytes().end()});
   }
   if (!options_.report.empty()) {
     JsonWriter json;

@@ -34,7 +34,7 @@ std::string Runner::costSummary() const {
   std::string summary = line;
   if (const double overhead = shadowOverhead(); overhead > 0.0) {
     std::snprintf(line, sizeof line, "\nshadow: %.2fx the frame without it (%.2f ms)", overhead,
-                  baseline_measure_->medianFrameMs());
+                  baseline_.measure->medianFrameMs());
     summary += line;
   }
   return summary;
@@ -154,12 +154,13 @@ void Runner::drawPanel(Frame& frame) {
   ImGui::TextWrapped("%s", lesson_->seeds().c_str());
   ImGui::PopStyleColor();
   // The two answers every lesson gives, where no scrolling hides them: how wrong, what it costs.
+  const ErrorState& error = truth_.error();
   if (options_.truth) {
-    if (error_.valid && error_.metrics.counted_pixels == 0) {
-      ImGui::TextWrapped("error: none counted (%s)", notCountedReason(error_.metrics).c_str());
-    } else if (error_.valid) {
+    if (error.valid && error.metrics.counted_pixels == 0) {
+      ImGui::TextWrapped("error: none counted (%s)", notCountedReason(error.metrics).c_str());
+    } else if (error.valid) {
       ImGui::TextWrapped("error: false shadow %.2f%%, false lit %.2f%%",
-                         error_.metrics.false_shadow_pct, error_.metrics.false_lit_pct);
+                         error.metrics.false_shadow_pct, error.metrics.false_lit_pct);
     } else {
       ImGui::TextDisabled("error: measuring...");
     }
@@ -172,23 +173,23 @@ void Runner::drawPanel(Frame& frame) {
         "and shadows near it are undefined",
         on.c_str());
   }
-  if (error_.valid && error_.metrics.grazing_pixels > error_.metrics.counted_pixels) {
+  if (error.valid && error.metrics.grazing_pixels > error.metrics.counted_pixels) {
     ImGui::TextWrapped("the light grazes most surfaces seen (N.L < %g): those are not counted",
                        static_cast<double>(kGrazingNdotL));
   }
   ImGui::PopStyleColor();
-  if (texel_stats_ && texel_stats_->pixels == 0) {
+  if (texels_.stats && texels_.stats->pixels == 0) {
     ImGui::TextWrapped("texels per pixel: none counted (no pixel seen lies in the map)");
-  } else if (texel_stats_) {
+  } else if (texels_.stats) {
     ImGui::TextWrapped("texels per pixel: median %.2f (least axis), %.1f%% under-sampled%s",
-                       texel_stats_->min_axis.median, texel_stats_->undersampled_pct,
-                       texel_key_ == errorKey() ? "" : " (stale)");
+                       texels_.stats->min_axis.median, texels_.stats->undersampled_pct,
+                       texels_.key == errorKey() ? "" : " (stale)");
   }
   if (const double overhead = shadowOverhead(); overhead > 0.0) {
     ImGui::Text("cost: %.2fx the frame without shadow", overhead);
   }
   params_.drawWidgets([](const Param& p) { return p.name == "view" || p.name == "scene"; });
-  if (ImGui::Button("Screenshot (F12)")) screenshot_requested_ = true;
+  if (ImGui::Button("Screenshot (F12)")) window_.screenshot_requested = true;
 
   const auto shared = [](const Param& p) {
     return p.name == "view" || p.name == "scene" || p.name.rfind("light.", 0) == 0 ||
@@ -231,8 +232,8 @@ void Runner::drawPanel(Frame& frame) {
       // A page's worker takes seconds; natively the truth is there before this shows.
       ImGui::TextDisabled("tracing the truth: %.0f%%", 100.0 * errorMeasureProgress());
     }
-    if (error_.valid) {
-      const ErrorMetrics& e = error_.metrics;
+    if (truth_.error().valid) {
+      const ErrorMetrics& e = truth_.error().metrics;
       if (e.counted_pixels == 0) {
         ImGui::TextWrapped("No pixel counted: %s (is the eye inside an object?)",
                            notCountedReason(e).c_str());
@@ -241,7 +242,7 @@ void Runner::drawPanel(Frame& frame) {
                            e.false_lit_pct);
         ImGui::TextWrapped("vis_mae %.4f  non-finite %lld  counted %lld%s", e.vis_mae,
                            e.nonfinite_pixels, e.counted_pixels,
-                           error_key_ == errorKey() ? "" : "  (stale: updating)");
+                           truth_.key() == errorKey() ? "" : "  (stale: updating)");
       }
       if (e.air.valid && !e.air.note.empty()) {
         ImGui::TextWrapped("air: 0 (%s)", e.air.note.c_str());
@@ -252,7 +253,7 @@ void Runner::drawPanel(Frame& frame) {
         ImGui::TextWrapped("air: mae %.4f  rel. RMSE %.1f%% (truth mean %.3f, noise %.4f)",
                            e.air.mae, 100.0 * e.air.rel_rmse, e.air.truth_mean, e.air.truth_noise);
       }
-    } else if (truth_failed_ && error_key_ == errorKey()) {
+    } else if (truth_.failed() && truth_.key() == errorKey()) {
       ImGui::TextWrapped("the ray tracer failed: the browser's console says why");
     } else {
       ImGui::TextDisabled("not measured yet");

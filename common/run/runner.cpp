@@ -69,7 +69,7 @@ Runner::Runner(const std::string& lessonName, std::unique_ptr<Lesson> lesson, Ru
 
 Runner::~Runner() {
   releaseGl();
-  if (window_) glfwTerminate();
+  if (window_.open) glfwTerminate();
 }
 
 void Runner::declareShared() {
@@ -132,7 +132,7 @@ void Runner::loadScene() {
   params_.setDefaultVec3(params_.at("camera.target"), scene_.camera.target);
   params_.setDefaultFloat(params_.at("camera.fov"), scene_.camera.fov);
   params_.consume(kDirtyScene);
-  truth_.reset();
+  truth_.forgetTracer();
   if (gpu_) {
     gpu_->meshes.clear();
     for (const auto& object : scene_.objects) gpu_->meshes.emplace_back(object.mesh);
@@ -220,7 +220,7 @@ void Runner::releaseGl() {
   // runner's own, the context last (Gpu declares it first, so it is destroyed last).
   lesson_.reset();
   measure_.reset();
-  baseline_measure_.reset();
+  baseline_.measure.reset();
   gpu_.reset();
 }
 
@@ -228,7 +228,7 @@ void Runner::initGl() {
   GlErrorLog::install();
   GlErrorLog::reset();
   measure_ = std::make_unique<Measure>();
-  baseline_measure_ = std::make_unique<Measure>();
+  baseline_.measure = std::make_unique<Measure>();
   const auto dir = commonShaderDir();
   gpu_->gbuffer = Program(dir / "gbuffer.vert", dir / "gbuffer.frag");
   gpu_->image = Program(dir / "fullscreen.vert", dir / "image.frag");
@@ -244,8 +244,8 @@ void Runner::initGl() {
 }
 
 void Runner::setMouse(glm::vec2 position, bool leftDown) {
-  mouse_ = position;
-  mouse_down_ = leftDown;
+  window_.mouse = position;
+  window_.mouse_down = leftDown;
 }
 
 int Runner::glErrors() const {
@@ -253,10 +253,10 @@ int Runner::glErrors() const {
 }
 
 void Runner::renderFrame(bool timed) {
-  const GLuint target = window_ ? 0 : gpu_->target->id();
+  const GLuint target = window_.open ? 0 : gpu_->target->id();
   int w = options_.width, h = options_.height;
-  if (window_) glfwGetFramebufferSize(gpu_->window, &w, &h);
-  const bool panel = gpu_->imgui && (window_ || options_.panel);
+  if (window_.open) glfwGetFramebufferSize(gpu_->window, &w, &h);
+  const bool panel = gpu_->imgui && (window_.open || options_.panel);
   renderInto(target, w, h, params_.at("view").choice(), timed, panel);
   GlErrorLog::poll();
 }
@@ -266,7 +266,7 @@ void Runner::renderBaselineFrame() {
   const std::string view = params_.at("view").choice();
   if (off == nullptr || off->b() || view == "truth" || view == "error") return;
   int w = options_.width, h = options_.height;
-  if (window_) glfwGetFramebufferSize(gpu_->window, &w, &h);
+  if (window_.open) glfwGetFramebufferSize(gpu_->window, &w, &h);
   gpu_->ensureTargets(w, h);
   // What the lesson's frame told the runner, and what it has still to do (a dirty map must
   // still be rendered by the next real frame), survive the baseline frame, exception or not.
@@ -275,33 +275,26 @@ void Runner::renderBaselineFrame() {
     Runner& r;
     Param& off;
     std::uint32_t dirty;
-    std::optional<glm::mat4> frustum;
-    float area_radius;
-    std::optional<AirMedium> medium;
-    std::optional<ShadowSampling> sampling;
+    FrameOutputs told;
     ~Restore() {
       off.value[0] = 0.0;
-      std::swap(r.measure_, r.baseline_measure_);
-      r.in_baseline_ = false;
+      std::swap(r.measure_, r.baseline_.measure);
+      r.baseline_.running = false;
       r.params_.markDirty(dirty & ~kDirtyScene);
-      r.light_frustum_ = frustum;
-      r.truth_area_radius_ = area_radius;
-      r.medium_ = medium;
-      r.shadow_sampling_ = sampling;
+      r.told_ = told;
     }
-  } restore{*this,           *off, params_.dirty(), light_frustum_, truth_area_radius_, medium_,
-            shadow_sampling_};
-  std::swap(measure_, baseline_measure_);
-  in_baseline_ = true;
+  } restore{*this, *off, params_.dirty(), told_};
+  std::swap(measure_, baseline_.measure);
+  baseline_.running = true;
   off->value[0] = 1.0;  // not through Params::set: nothing is dirtied
   // The first one compiles the unshadowed variants: not timed. The panel, if shown, is laid
   // over it as over the lesson's frames (never drawn anew: it takes no input here).
-  const bool panel = gpu_->imgui && (window_ ? !options_.hide_panel : options_.panel);
-  renderInto(gpu_->target->id(), w, h, view, /*timed=*/baseline_frames_++ > 0, panel);
+  const bool panel = gpu_->imgui && (window_.open ? !options_.hide_panel : options_.panel);
+  renderInto(gpu_->target->id(), w, h, view, /*timed=*/baseline_.frames++ > 0, panel);
 }
 
 double Runner::shadowOverhead() const {
-  const double base = baseline_measure_ ? baseline_measure_->medianFrameMs() : 0.0;
+  const double base = baseline_.measure ? baseline_.measure->medianFrameMs() : 0.0;
   return base > 0.0 ? measure_->medianFrameMs() / base : 0.0;
 }
 
@@ -329,14 +322,15 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
   // In a window the panel is drawn anew only when it may have changed (input, or every
   // quarter second for its numbers) and laid over the other frames from a texture: ImGui's
   // thousands of blended triangles cost a CPU rasterizer as much as some lessons' shadows.
-  const bool draw_panel = withPanel && (!window_ || (!in_baseline_ && panelDue(width, height)));
+  const bool draw_panel =
+      withPanel && (!window_.open || (!baseline_.running && panelDue(width, height)));
   if (draw_panel) {
     ImGuiIO& io = ImGui::GetIO();
-    if (!window_) {
+    if (!window_.open) {
       io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
       io.DeltaTime = 1.0f / 60.0f;
-      io.MousePos = ImVec2(mouse_.x, mouse_.y);
-      io.MouseDown[0] = mouse_down_;
+      io.MousePos = ImVec2(window_.mouse.x, window_.mouse.y);
+      io.MouseDown[0] = window_.mouse_down;
     } else {
       ImGui_ImplGlfw_NewFrame();
     }
@@ -361,10 +355,10 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
     // A page cannot wait seconds for the rays: it shows the last truth measured while its Web
     // Worker traces the current one, which the window loop starts once the sliders rest (here
     // instead when the page measures no error otherwise, ?no-truth).
-    if (!options_.truth && error_key_ != errorKey()) beginErrorMeasure();
+    if (!options_.truth && truth_.key() != errorKey()) beginErrorMeasure();
 #endif
     measure_->setEnabled(timed);
-    const Image& shown = frame.mode == "truth" ? truth_image_ : error_image_;
+    const Image& shown = frame.mode == "truth" ? truth_.truthImage() : truth_.errorImage();
     if (!haveTruth() || shown.rgba.empty())
       frame.clearTarget(Frame::kNoTruthColor);  // a plain picture; the panel says why
     showImage(frame, shown);
@@ -377,16 +371,14 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
     ProgramVariants::takeUsed();  // only this frame's
     lesson_->render(frame);
     measure_->variants(ProgramVariants::takeUsed());
-    light_frustum_ = frame.light_view_projection;
-    truth_area_radius_ = frame.truth_area_radius;
-    medium_ = frame.medium;
-    shadow_sampling_ = frame.shadow_sampling;
+    told_ = {frame.light_view_projection, frame.truth_area_radius, frame.medium,
+             frame.shadow_sampling};
     if (texels) {
       frame.mode = texel_mode;
       drawTexels(frame, texel_mode == "aliasing");
     }
   }
-  if (withPanel && !window_) {
+  if (withPanel && !window_.open) {
     frame.bindTarget();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   } else if (withPanel) {

@@ -11,7 +11,7 @@
 
 #include "core/image.hpp"
 #include "lesson/lesson.hpp"
-#include "truth/truth_job.hpp"
+#include "run/truth_measure.hpp"
 
 namespace shadows {
 
@@ -62,13 +62,13 @@ class Runner final : public LessonHost {
   void renderBaselineFrame();
   // Median frame over median baseline frame (0 before any baseline frame).
   double shadowOverhead() const;
-  const Measure& baselineMeasure() const { return *baseline_measure_; }
+  const Measure& baselineMeasure() const { return *baseline_.measure; }
   // The panel's frame line: the median the report gives ("measuring..." before any frame).
   std::string costSummary() const;
   // The last frame's work counters, one line: "name N, ..., name unavailable on gles30".
   std::string counterSummary() const;
   // The next window frame is saved as a screenshot (what the F12 key does).
-  void requestScreenshot() { screenshot_requested_ = true; }
+  void requestScreenshot() { window_.screenshot_requested = true; }
   // Why the truth and error views show no picture ("" when the build has the truth).
   static std::string truthUnavailable();
   // Feeds ImGui a mouse state for the next frame (headless tests drive the panel this way).
@@ -82,17 +82,17 @@ class Runner final : public LessonHost {
   // there (true then). One job at a time; measureError() waits for a running one.
   void beginErrorMeasure();
   bool pollErrorMeasure();
-  bool errorMeasureRunning() const { return truth_job_.valid() || page_job_ != nullptr; }
+  bool errorMeasureRunning() const { return truth_.running(); }
   // The running measure's progress in [0, 1], or -1 when not known (natively) or none runs.
   double errorMeasureProgress() const;
   // Whether the truth and error views can show anything: the build has a tracer, and a page
   // loaded its own (truthUnavailable() says why not).
   static bool haveTruth();
   // How many truths have been installed so far (a page's tests wait on it).
-  long long truthsMeasured() const { return truths_measured_; }
+  long long truthsMeasured() const { return truth_.measured(); }
   // Whether a page's workers failed to trace the current settings (the console says why).
-  bool truthFailed() const { return truth_failed_; }
-  const ErrorState& lastError() const override { return error_; }
+  bool truthFailed() const { return truth_.failed(); }
+  const ErrorState& lastError() const override { return truth_.error(); }
   Image readImage() const;
   std::vector<float> renderVisibility();
   // Renders `mode` into the float target and returns its red channel (visibility, air).
@@ -163,8 +163,7 @@ class Runner final : public LessonHost {
   // The eye's matrices from camera.*: one definition for the lesson and the truth's pass.
   glm::mat4 cameraView() const;
   glm::mat4 cameraProjection(int width, int height) const;
-  static constexpr int kNoWindow = -1;  // runWindow could not open one
-  std::string window_error_;            // and why, as GLFW said it
+  static constexpr int kNoWindow = -1;  // runWindow could not open one (window_.error: why)
   int runWindow();
   int runHeadless();
 
@@ -175,59 +174,45 @@ class Runner final : public LessonHost {
   Params params_;
   Scene scene_;
   std::vector<glm::mat4> preset_models_;
-  std::unique_ptr<Measure> measure_, baseline_measure_;
-  // The texel measure's frame draws into this one, enabled: the lesson draws with the very
-  // variants a timed frame uses (05's counted kernel, not an uncounted twin), and the frame's
-  // counters stay out of the report's.
-  std::unique_ptr<Measure> texel_measure_;
-  long long baseline_frames_ = 0;
-  bool in_baseline_ = false;
+  std::unique_ptr<Measure> measure_;
   void initImGuiGl();  // the ImGui GL backend (both window and headless)
   long long compiled_at_start_ = ProgramVariants::compiledTotal();
   std::unique_ptr<Gpu> gpu_;
-  // Embree (or a page's JavaScript) for the current scene, shared with a trace running on
-  // another thread.
-  std::shared_ptr<const TruthTracer> truth_;
-  std::optional<TruthTrace> given_trace_;              // --truth-from
-  std::vector<std::uint8_t> job_bytes_, trace_bytes_;  // --truth-job, --truth-result
-  ErrorState error_;
-  std::string error_key_;
-  Image error_image_, truth_image_;
-  std::optional<glm::mat4> light_frustum_;
-  float truth_area_radius_ = 0.0f;
-  std::optional<AirMedium> medium_;
-  std::optional<ShadowSampling> shadow_sampling_;
-  std::vector<TexelPixel> texel_pixels_;  // measureTexels(), for texel_key_
-  std::optional<TexelStats> texel_stats_;
-  std::string texel_key_;
+  // What the lesson's last frame told the runner (Frame's outputs).
+  struct FrameOutputs {
+    std::optional<glm::mat4> light_frustum;
+    float truth_area_radius = 0.0f;
+    std::optional<AirMedium> medium;
+    std::optional<ShadowSampling> shadow_sampling;
+  } told_;
+  // The frames with shadow.off (renderBaselineFrame), timed in their own Measure.
+  struct Baseline {
+    std::unique_ptr<Measure> measure;
+    long long frames = 0;
+    bool running = false;
+  } baseline_;
+  // measureTexels()'s pass, for `key`. Its frame draws into its own Measure, enabled: the
+  // lesson draws with the very variants a timed frame uses (05's counted kernel, not an
+  // uncounted twin), and the frame's counters stay out of the report's.
+  struct TexelCache {
+    std::vector<TexelPixel> pixels;
+    std::optional<TexelStats> stats;
+    std::string key;
+    std::unique_ptr<Measure> measure;
+  } texels_;
   // The runner's texel pass over the frame the lesson just drew (`aliasing` view or raw).
   void drawTexels(const Frame& frame, bool heatmap);
-  Truth::AirResult air_truth_;
-  struct TruthInputs;
-  struct TruthResult {  // what a traced truth installs
-    std::string key;
-    ErrorMetrics metrics;
-    Image error_image, truth_image;
-    Truth::AirResult air;
-    std::shared_ptr<const TruthTracer> truth;
-    std::vector<std::uint8_t> job_bytes, trace_bytes;  // when the outputs ask for them
-    std::shared_ptr<const ErrorPixels> pixels;
-  };
+  TruthMeasure truth_;
   int runHeadlessOrWindow();
-  TruthInputs gatherTruthInputs();                    // render thread
-  static TruthResult traceTruth(TruthInputs inputs);  // any thread: no GL, no runner state
-  void installTruth(TruthResult result);
-  std::future<TruthResult> truth_job_;
-  // A page's measure: what its Web Worker's trace will be compared with (no threads there).
-  std::shared_ptr<TruthInputs> page_job_;
-  long long truths_measured_ = 0;
-  bool truth_failed_ = false;
-  glm::vec2 mouse_{-1.0f};
-  bool mouse_down_ = false;
-  double last_time_ = 0.0;
-  bool window_ = false;
-  bool screenshot_requested_ = false;
-  int screenshots_taken_ = 0;
+  TruthInputs gatherTruthInputs();  // render thread: what traceTruth needs of the GPU
+  struct WindowState {
+    bool open = false;
+    std::string error;  // why none opened, as GLFW said it
+    bool screenshot_requested = false;
+    int screenshots_taken = 0;
+    glm::vec2 mouse{-1.0f};  // setMouse: a headless test's mouse
+    bool mouse_down = false;
+  } window_;
 };
 
 // main() of every lesson binary: parse, run, exit code (0 ok, 1 runtime failure, 2 bad input).

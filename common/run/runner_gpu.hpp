@@ -1,5 +1,5 @@
 // The runner's own GL state (targets, programs, the context, ImGui), shared by the files that
-// implement Runner. Private to common/.
+// implement Runner. Private to run/.
 #pragma once
 
 #include <imgui.h>
@@ -16,15 +16,9 @@
 
 struct GLFWwindow;
 
-// Whether this build has the ray-traced truth (Embree, native); the browser's build has none
-// yet, and its truth and error views say so (app.cpp) instead of showing a picture.
-#ifndef SHADOWS_HAVE_TRUTH
-#define SHADOWS_HAVE_TRUTH 1
-#endif
-
 namespace shadows {
 
-inline constexpr bool kHaveTruth = SHADOWS_HAVE_TRUTH != 0;
+// What the truth and error views say in a build without the truth (kHaveTruth).
 inline constexpr const char* kNoTruthNote = "truth not available in this build";
 
 struct Runner::Gpu {

@@ -34,8 +34,8 @@ int Runner::runWindow() {
 bool Runner::openWindow() {
   // Until a window is open, GLFW's complaint is kept for the one line run() prints about it;
   // after that, it is printed as it comes.
-  static std::string* opening_error = &window_error_;
-  opening_error = &window_error_;
+  static std::string* opening_error = &window_.error;
+  opening_error = &window_.error;
   glfwSetErrorCallback([](int, const char* description) {
     if (opening_error != nullptr) {
       *opening_error = description;
@@ -47,14 +47,14 @@ bool Runner::openWindow() {
     opening_error = nullptr;  // later errors (a headless fallback's) are printed, not kept
     return false;
   }
-  window_ = true;
+  window_.open = true;
   setGlfwContextHints();
   GLFWwindow* window = glfwCreateWindow(
       options_.width, options_.height, (name_ + ": " + lesson_->title()).c_str(), nullptr, nullptr);
   if (window == nullptr) {
-    if (window_error_.empty()) window_error_ = std::string("no ") + (contextName() + 2);
+    if (window_.error.empty()) window_.error = std::string("no ") + (contextName() + 2);
     glfwTerminate();
-    window_ = false;
+    window_.open = false;
     opening_error = nullptr;
     return false;
   }
@@ -154,7 +154,7 @@ bool Runner::windowFrame() {
       const glm::vec3 target = params_.at("camera.target").v();
       params_.setVec3(pos, target + (pos.v() - target) * std::pow(0.9f, io.MouseWheel));
     }
-    if (glfwGetKey(window, GLFW_KEY_F12) == GLFW_PRESS) screenshot_requested_ = true;
+    if (glfwGetKey(window, GLFW_KEY_F12) == GLFW_PRESS) window_.screenshot_requested = true;
     // H hides or shows the panel (on the key's press, not while it is held).
     const bool h_down = glfwGetKey(window, GLFW_KEY_H) == GLFW_PRESS;
     if (h_down && !h_was_down && !io.WantTextInput) options_.hide_panel = !options_.hide_panel;
@@ -180,7 +180,7 @@ bool Runner::windowFrame() {
       const bool resting = now - changed_at > std::chrono::milliseconds(300);
       setInputMoving(ImGui::IsAnyItemActive() ||
                      (moved_at && now - *moved_at <= std::chrono::milliseconds(300)));
-      if (options_.truth && resting && key != error_key_ && !errorMeasureRunning() &&
+      if (options_.truth && resting && key != truth_.key() && !errorMeasureRunning() &&
           !ImGui::IsAnyItemActive()) {
         beginErrorMeasure();
       }
@@ -191,8 +191,8 @@ bool Runner::windowFrame() {
       // lesson's, not the baseline's.
       if (!options_.hide_panel && frame_number++ % 32 == 0) renderBaselineFrame();
       GlErrorLog::poll();
-      if (screenshot_requested_) {
-        screenshot_requested_ = false;
+      if (window_.screenshot_requested) {
+        window_.screenshot_requested = false;
         saveScreenshot(w, h, {});
       }
       if (frames_left > 0 && --frames_left == 0) {
