@@ -4,6 +4,7 @@
 #include "lighting.glsl"
 #include "border.glsl"
 #include "clip_plane_in.glsl"
+#include "spot.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -19,19 +20,9 @@ uniform float uExtent;      // a parallel projector: the half width of its beam
 uniform vec3 uAxis;         // where the projector points
 out vec4 outColor;
 
-// Seed 000's first back-projection fix: a spotlight term with the proper cut-off, which is
-// 0 behind the projector because the angle to its axis is over 90 degrees there.
+// The spotlight term of seed 000's first back-projection fix (spot.glsl).
 float spot() {
-  if (uFalloff <= 0.0) return 1.0;
-  vec3 d = vWorld - uLightPos;
-  float along = dot(d, uAxis);
-  if (uLightDirectional == 1) {
-    if (along <= 0.0) return 0.0;
-    float radial = length(d - along * uAxis) / uExtent;
-    return 1.0 - smoothstep(1.0 - uFalloff, 1.0, radial);
-  }
-  float cos_angle = along / max(length(d), 1e-6);
-  return smoothstep(cos(uHalfAngle), cos(uHalfAngle * (1.0 - uFalloff)), cos_angle);
+  return spotFalloff(vWorld - uLightPos, uAxis, uLightDirectional, uFalloff, uHalfAngle, uExtent);
 }
 
 // Where the projector's light lands at all (the shadow term of this lesson: 1 or 0).

@@ -19,6 +19,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -26,6 +27,7 @@
 
 #include "core/image.hpp"
 #include "core/json.hpp"
+#include "gl/caps.hpp"
 #include "run/runner.hpp"
 
 namespace {
@@ -92,6 +94,106 @@ void compareCounters(const Json& ref, const Json& own, const Json& unavailable,
       (g_counters_differ ? note
                          : fail)(at + ": " + own.at(name).dump() + ", reference " + value.dump());
     }
+  }
+}
+
+// The README's flavour table ("One source, three APIs"): the counters each flavour must report
+// as unavailable, by lesson ("" for every lesson). Exactly these, so that a counter nulled
+// where the table says it is counted fails, as does one counted where the table says it cannot
+// be. fragment_invocations on a desktop flavour depends on ARB_pipeline_statistics_query
+// (Mesa has it, macOS not): allowed either way there.
+const std::map<std::string, std::map<std::string, std::set<std::string>>> kUnavailable = {
+    {"gl45", {}},
+    {"gl41",
+     {{"05_pcf_dithered",
+       {"pcf_taps", "pcf_filtered_fragments", "pcf_stopped_early", "pcf_skipped_facing_away"}}}},
+    {"gles30",
+     {{"", {"fragment_invocations", "fragments_passed"}},
+      {"05_pcf_dithered",
+       {"pcf_taps", "pcf_filtered_fragments", "pcf_stopped_early", "pcf_skipped_facing_away"}},
+      {"06_dual_texture_8bit", {"pass2_lit_fragments"}},
+      {"07_multidigit_16bit", {"pass2_lit_fragments", "pass3_lit_fragments"}},
+      {"08_atmospherics",
+       {"air_fragments_passed", "air_fragments_shaded", "air_fragments_skipped"}}}},
+};
+
+void checkFlavourTable(const std::string& lesson, const Json& own) {
+  const std::string flavour = own.value("flavour", "?");
+  const auto table = kUnavailable.find(flavour);
+  if (table == kUnavailable.end()) return fail("report: flavour " + flavour + " not in the table");
+  std::set<std::string> expected;
+  for (const char* row : {"", lesson.c_str()}) {
+    if (const auto it = table->second.find(row); it != table->second.end()) {
+      expected.insert(it->second.begin(), it->second.end());
+    }
+  }
+  std::set<std::string> said;
+  const Json unavailable = own.value("unavailable", Json::object());
+  for (const auto& [name, why] : unavailable.items()) {
+    said.insert(name);
+    if (why != "unavailable on " + flavour) fail("unavailable/" + name + ": " + why.dump());
+  }
+  for (const std::string& name : expected) {
+    if (!said.count(name))
+      fail("counters: " + name + " counted, but the README's table says " + flavour + " cannot");
+  }
+  for (const std::string& name : said) {
+    const bool optional = flavour != "gles30" && name == "fragment_invocations";
+    if (!expected.count(name) && !optional) {
+      fail("counters: " + name + " unavailable, but the README's table says " + flavour +
+           " counts it");
+    }
+  }
+}
+
+// The read-back the README's table describes, on a frame that renders the map (06, 07):
+// through the CPU, gl45 and gl41 read the depth itself (1 byte a texel for 06's 8 bits, 2 for
+// 07's 16) while OpenGL ES, which reads colour as RGBA only, first writes the digits into
+// colour in a pass of its own (06's linear encoding has them in colour already) and reads 4
+// bytes a texel; a copy moves every texel on the GPU and reads nothing back.
+void checkReadback(shadows::Runner& runner, const std::string& lesson) {
+  shadows::Params& params = runner.params();
+  if (params.find("map.path") == nullptr) return;
+  const std::string flavour = shadows::caps().flavour;
+  params.set("shadow.cache", "false");  // this frame renders the map
+  runner.renderFrame();
+  const int digits = lesson.rfind("07", 0) == 0 ? 2 : 1;
+  const long long size = params.at("shadow.size").i();
+  const long long height =
+      params.at("shadow.height").i() > 0 ? params.at("shadow.height").i() : size;
+  const long long texels = size * height;
+  const auto& counts = runner.measure().lastFrameCounts();
+  const auto& work = runner.measure().lastFrameWork();
+  const auto count = [&](const char* name) {
+    const auto it = counts.find(name);
+    return it == counts.end() ? -1LL : it->second;
+  };
+  const long long digit_draws = work.count("readback") ? work.at("readback").draw_calls : 0;
+  const std::string path = params.at("map.path").choice();
+  const bool es = flavour == "gles30";
+  std::printf(
+      "readback: %s, %lld texels: readback_bytes %lld, copied_texels %lld, digit pass draws %lld\n",
+      path.c_str(), texels, count("readback_bytes"), count("copied_texels"), digit_draws);
+  if (path == "read_pixels") {
+    const long long expected = texels * (es ? 4 : digits);
+    if (count("readback_bytes") != expected) {
+      fail("readback_bytes " + std::to_string(count("readback_bytes")) + ", the table says " +
+           std::to_string(expected) + " (" + std::to_string(es ? 4 : digits) + " a texel)");
+    }
+  } else if (path == "copy_texture") {
+    if (count("readback_bytes") != -1)
+      fail("copy_texture read " + std::to_string(count("readback_bytes")) + " bytes back");
+    if (count("copied_texels") != texels)
+      fail("copied_texels " + std::to_string(count("copied_texels")) + ", expected " +
+           std::to_string(texels));
+  }
+  // 06's linear encoding writes its 8 bits into colour in the light pass already: no pass.
+  const shadows::Param* encoding = params.find("map.encoding");
+  const bool digit_pass = es && !(encoding != nullptr && encoding->choice() == "linear");
+  if (path != "render_to_texture" && (digit_draws > 0) != digit_pass) {
+    fail("the read-back pass draws " + std::to_string(digit_draws) +
+         (digit_pass ? " times: OpenGL ES writes the depth's digits into colour first"
+                     : " times: only OpenGL ES reading a depth draws there"));
   }
 }
 
@@ -201,6 +303,10 @@ int main(int argc, char** argv) {
     shadows::JsonWriter json;
     runner.writeReport(json);
     std::ofstream(out / "report.json") << json.str() << "\n";
+    if (const Json own = Json::parse(json.str(), nullptr, false); !own.is_discarded()) {
+      checkFlavourTable(lesson, own);
+    }
+    checkReadback(runner, lesson);
     if (!reference.empty()) {
       const Json own = Json::parse(json.str(), nullptr, false);
       const Json ref = readJson(reference / "report.json");
