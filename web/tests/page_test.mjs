@@ -4,9 +4,10 @@
 //    golden tolerance (tests/golden/README.md: at most 16 of 320x240 pixels differ at all) of
 //    the native gles30 lesson's picture of the same configuration;
 //  - the page with its panel renders too (its screenshot is kept: README's picture);
-//  - a bad query parameter shows, on the page, the very line the command line prints for it,
-//    and the lesson runs with its defaults;
-//  - without WebGL 2 the page says so instead of showing a blank canvas.
+//  - on one lesson's page (kShellLesson: the shell is every page's), a bad query parameter
+//    shows the very line the command line prints for it and the lesson runs with its
+//    defaults; a site without the tracer or its workers says so and goes on drawing; without
+//    WebGL 2 the page says so instead of showing a blank canvas.
 //
 //   node web/tests/page_test.mjs LESSON SITE_DIR NATIVE_BINARY OUT_DIR
 import { execFileSync, spawnSync } from 'node:child_process';
@@ -21,6 +22,9 @@ if (!outDir) {
   process.exit(2);
 }
 const kSize = '320x240';
+// What every page shares (shell.html, the query parser, the truth's JavaScript) is checked on
+// this lesson's page only: the same code on every page, and seconds of browser time each.
+const kShellLesson = '01_projected_planar';
 // Two rasterizers (SwiftShader here, llvmpipe natively) agree on a picture only up to the
 // rounding of shading and of edges: tests/golden/README.md, "The browser against native".
 const kMoved8Fraction = Number(process.env.SHADOWS_WEB_MOVED8 ?? 0.002);  // of the pixels
@@ -195,8 +199,9 @@ try {
     await page.close();
   }
 
-  // Bad input: an unknown parameter and one out of range, each the command line's line.
-  for (const bad of ['no.such.param=1', 'camera.fov=500']) {
+  // Bad input: an unknown parameter and one out of range, each the command line's line. The
+  // page's shell, parser and notices are every lesson's: one lesson checks them (kShellLesson).
+  for (const bad of lesson === kShellLesson ? ['no.such.param=1', 'camera.fov=500'] : []) {
     const run = nativeRun([bad], path.join(outDir, 'unused.png'));
     const expected = run.stderr.trim();
     if (run.status !== 2 || expected.split('\n').length !== 1) fail(`native --set ${bad}: exit ${run.status}, "${expected}"`);
@@ -218,8 +223,8 @@ try {
 
   // A value the query hides a NUL or a right-to-left override in: the parser sees all of it
   // (the NUL as the four characters \x00, as a native message prints it) and the notice shows
-  // the override escaped. The page's shell and parser are every lesson's: one lesson checks.
-  if (lesson === '03_shadow_map_basic') {
+  // the override escaped.
+  if (lesson === kShellLesson) {
     const hidden = [['camera.fov=45%00garbage', 'camera.fov=45\\x00garbage'],
                     ['camera.fov=%00', 'camera.fov=\\x00'],
                     ['camera.fov=4%E2%80%AE5', 'camera.fov=4\u202E5']];
@@ -252,8 +257,9 @@ try {
 }
 
 // A site without the ray tracer's libraries (a copy missing vendor/): the page says so, the
-// lesson runs, and the truth view is the plain "not available" picture.
-{
+// lesson runs, and the truth view is the plain "not available" picture. Like the checks below,
+// the shell's and the truth's JavaScript are every lesson's: one lesson checks them.
+if (lesson === kShellLesson) {
   const partial = await serve(site, 0, /^\/vendor\//);
   const bare = await launch();
   try {
@@ -279,7 +285,7 @@ try {
 
 // A site whose workers cannot start (truth/worker.js missing): the page says the ray tracer
 // failed, on the page and in the console, and goes on drawing.
-{
+if (lesson === kShellLesson) {
   const partial = await serve(site, 0, /^\/truth\/worker\.js$/);
   const bare = await launch();
   try {
@@ -301,7 +307,7 @@ try {
 }
 
 // Without WebGL 2: a clear message, no blank canvas.
-{
+if (lesson === kShellLesson) {
   const bare = await launch(['--disable-webgl2', '--disable-webgl']);
   try {
     const page = await open(bare, `${server.url}${lesson}.html`);
