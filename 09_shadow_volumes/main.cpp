@@ -19,7 +19,9 @@
 #include "core/json.hpp"
 #include "gl/caps.hpp"
 #include "lesson/lesson.hpp"
+#include "math/shadow_math.hpp"
 #include "math/shadow_volume.hpp"
+#include "ray_count.hpp"
 
 namespace shadows {
 
@@ -37,7 +39,7 @@ class ShadowVolumes final : public Lesson {
     return "seed 003: slides 22-50 (Shadow Volumes .. Shadow Volume Issues); seed 002: additive "
            "light masking";
   }
-  std::vector<std::string> debugViews() const override { return {"volumes", "count"}; }
+  std::vector<std::string> debugViews() const override { return {"volumes", "count", "overview"}; }
   // A volume reaches to infinity: no light frustum, no map.
   std::vector<std::string> unusedSharedParams() const override {
     return {"light.fov", "light.extent", "light.near", "light.far"};
@@ -95,10 +97,14 @@ class ShadowVolumes final : public Lesson {
     volume_programs_ = ProgramVariants(lessonFile(LESSON_DIR, "volume.vert"),
                                        lessonFile(LESSON_DIR, "volume.frag"));
     flat_ = Program(commonShaderDir() / "fullscreen.vert", lessonFile(LESSON_DIR, "flat.frag"));
+    lines_ = Program(lessonFile(LESSON_DIR, "lines.vert"), lessonFile(LESSON_DIR, "flat.frag"));
   }
 
   void render(Frame& f) override {
     eyeProjection(f);
+    // The truth's passes render other modes with view=overview: the ray stays for the report.
+    if (f.params.at("view").choice() != "overview") ray_.reset();
+    if (f.mode == "overview") return renderOverview(f);
     const bool visibility = f.mode == "visibility";
     const bool modulative = combine_() == Combine::Modulative;
     // 1. The scene, dimmed (additive) or fully lit (modulative); the depth buffer.
@@ -150,6 +156,12 @@ class ShadowVolumes final : public Lesson {
                        open_edges_ > 0 ? ": closed as two-sided shells: " : "",
                        open_names_.c_str());
     if (clamp_refused_) ImGui::TextWrapped("GL_DEPTH_CLAMP is not offered here: finite far");
+    if (ray_) {
+      ImGui::TextWrapped(
+          "centre ray: the eye is in %d volume(s); before the surface it enters %d (green) and "
+          "leaves %d (red): z-pass counts %d, the surface is in %d",
+          ray_->at_eye, ray_->enters, ray_->leaves, ray_->zpassCount(), ray_->at_surface);
+    }
     if (stencil_() == Stencil::TwoSided && !two_sided_used_) {
       ImGui::TextWrapped(
           "two-sided stencil needs stencil.op=wrap (one pass has no fixed face "
@@ -163,6 +175,15 @@ class ShadowVolumes final : public Lesson {
     json.value("eye_far_used", far_used_);  // 0: at infinity
     json.value("depth_clamp", depth_clamp_ ? 1 : 0);
     json.value("stencil_passes", two_sided_used_ ? 1 : 2);
+    if (ray_) {  // view=overview: the centre pixel's ray through the volumes (slides 24-26)
+      json.beginObject("center_ray");
+      json.value("at_eye", ray_->at_eye);
+      json.value("enters", ray_->enters);
+      json.value("leaves", ray_->leaves);
+      json.value("zpass_count", ray_->zpassCount());
+      json.value("at_surface", ray_->at_surface);
+      json.endObject();
+    }
   }
 
  private:
@@ -405,10 +426,125 @@ class ShadowVolumes final : public Lesson {
     glBindVertexArray(0);
   }
 
+  // view=overview: the eye's scene from outside (seed 003 slides 24-26 and 38): the volumes
+  // closed and translucent, the eye's frustum in magenta, and its centre pixel's ray in white
+  // up to the surface it sees, a green mark where it enters a volume and a red one where it
+  // leaves. With the eye inside a volume (scene=eye_in_shadow) the ray starts inside: it
+  // leaves more often than it enters, and z-pass, which starts counting at 0, is wrong.
+  void renderOverview(Frame& f) {
+    auto timing = f.measure.pass("overview");
+    const glm::mat4 eye_inverse = glm::inverse(f.projection * f.view);
+    const glm::vec3 eye = f.eye;
+    const auto unproject = [&](glm::vec2 ndc, float z) {
+      const glm::vec4 p = eye_inverse * glm::vec4(ndc, z, 1.0f);
+      return glm::vec3(p) / p.w;
+    };
+    const glm::vec3 forward = glm::normalize(unproject({0.0f, 0.0f}, -1.0f) - eye);
+    // The centre pixel's ray: the surface it sees, then the volumes along it.
+    std::vector<glm::vec3> positions;
+    std::vector<glm::uvec3> triangles;
+    f.scene.worldTriangles(positions, triangles);
+    std::vector<volumes::Triangle> all;
+    for (const glm::uvec3& t : triangles)
+      all.push_back({positions[t.x], positions[t.y], positions[t.z]});
+    const float reach = 4.0f * f.scene.bounds().radius() + glm::length(eye);
+    const float surface = volumes::hit(all, eye, forward, 0.0f, reach).value_or(reach);
+    std::vector<std::vector<volumes::Triangle>> casters;
+    const Light& l = f.light;
+    for (const SceneObject& o : f.scene.objects) {
+      if (!o.castsFrom(l.position, l.directional, l.direction)) continue;
+      auto& caster = casters.emplace_back();
+      const auto world = [&](std::uint32_t i) {
+        return glm::vec3(o.model * glm::vec4(o.mesh.vertices[i].position, 1.0f));
+      };
+      for (size_t i = 0; i + 2 < o.mesh.indices.size(); i += 3) {
+        caster.push_back(
+            {world(o.mesh.indices[i]), world(o.mesh.indices[i + 1]), world(o.mesh.indices[i + 2])});
+      }
+    }
+    const glm::vec4 light =
+        l.directional ? glm::vec4(-l.direction, 0.0f) : glm::vec4(l.position, 1.0f);
+    ray_ = volumes::countAlongRay(casters, light, eye, forward, surface);
+
+    // The camera outside: beside and above the eye, looking at what lies between the eye and
+    // the scene's centre, far enough back to hold both.
+    Bounds bounds = f.scene.casterBounds(l.position, l.directional, l.direction);
+    bounds.add(eye);
+    const glm::vec3 centre = bounds.center();
+    const float radius = std::max(bounds.radius(), 1.0f);
+    const glm::vec3 up{0.0f, 1.0f, 0.0f};
+    glm::vec3 side = glm::cross(forward, up);
+    side = glm::length(side) < 1e-3f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::normalize(side);
+    const glm::vec3 look_at = centre;
+    const glm::mat4 eye_view = f.view, eye_projection = f.projection;
+    f.view = lookAtSafe(
+        look_at + 2.6f * radius * side + 1.8f * radius * up - 1.0f * radius * forward, look_at);
+    const float aspect = static_cast<float>(f.width) / static_cast<float>(std::max(f.height, 1));
+    f.projection = glm::tweakedInfinitePerspective(glm::radians(45.0f), aspect, 0.1f, 1e-6f);
+
+    f.clearTarget();
+    drawScene(f, "full");
+    drawVolumesSeen(f, /*closed=*/true);
+
+    // The lines, over everything: the frustum as far as the camera's target, the ray, marks.
+    std::vector<glm::vec3> frustum, ray, enters, leaves;
+    const float depth = std::max(glm::length(f.params.at("camera.target").v() - eye), 1.0f);
+    const glm::vec2 corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    glm::vec3 near[4], far[4];
+    for (int i = 0; i < 4; ++i) {
+      near[i] = unproject(corners[i], -1.0f);
+      far[i] = eye + glm::normalize(near[i] - eye) * depth /
+                         glm::dot(glm::normalize(near[i] - eye), forward);
+    }
+    for (int i = 0; i < 4; ++i) {
+      const int j = (i + 1) % 4;
+      for (const glm::vec3 p : {near[i], near[j], far[i], far[j], eye, far[i]})
+        frustum.push_back(p);
+    }
+    ray = {eye, eye + surface * forward};
+    const float mark = 0.06f * radius;
+    for (const auto& [t, by] : ray_->crossings) {
+      const glm::vec3 c = eye + t * forward;
+      for (const glm::vec3 axis : {glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1)}) {
+        for (const glm::vec3 p : {c - mark * axis, c + mark * axis})
+          (by > 0 ? enters : leaves).push_back(p);
+      }
+    }
+    PassState state;
+    state.depth_test = false;
+    state.apply();
+    lines_.use();
+    lines_.set("uViewProjection", f.projection * f.view);
+    drawLines(frustum, {1.0f, 0.2f, 1.0f, 1.0f});
+    drawLines(ray, {1.0f, 1.0f, 1.0f, 1.0f});
+    drawLines(enters, {0.2f, 1.0f, 0.2f, 1.0f});
+    drawLines(leaves, {1.0f, 0.15f, 0.1f, 1.0f});
+    PassState{}.apply();
+    f.view = eye_view, f.projection = eye_projection;
+  }
+
+  void drawLines(const std::vector<glm::vec3>& points, glm::vec4 colour) {
+    if (points.empty()) return;
+    lines_.set("uColor", colour);
+    GLuint vao = 0;
+    glGenVertexArrays(1, &vao);
+    const GlName<deleteVertexArray> keep(vao);
+    glBindVertexArray(vao);
+    const Buffer vbo(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(points.size() * sizeof(glm::vec3)),
+                     points.data(), GL_STREAM_DRAW);
+    vbo.bind();
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(points.size()));
+    countDrawCall();
+    glBindVertexArray(0);
+  }
+
   // view=volumes (slide 29, "render shadow volume faces"), translucent over the picture: the
   // faces in front of the surfaces (what z-pass counts) strong, those behind them (what z-fail
   // counts: most back faces end under the floor) faint; front faces warm, back faces cold.
-  void drawVolumesSeen(Frame& f) {
+  // `closed`: with both caps, whatever the method (the overview).
+  void drawVolumesSeen(Frame& f, bool closed = false) {
     buildVolumes(f);  // also with shadow.off, which counts none
     PassState state;
     state.depth_write = false;
@@ -431,7 +567,7 @@ class ShadowVolumes final : public Lesson {
       for (size_t i = 0; i < f.scene.objects.size(); ++i) {
         const SceneObject& o = f.scene.objects[i];
         if (o.castsFrom(l.position, l.directional, l.direction)) {
-          drawVolume(f, p, i, method_() == Method::ZFail);
+          drawVolume(f, p, i, closed || method_() == Method::ZFail);
         }
       }
     }
@@ -473,7 +609,8 @@ class ShadowVolumes final : public Lesson {
   BoolParam light_cap_, dark_cap_, cull_, off_;
   FloatParam far_distance_, dimming_;
   ProgramVariants scene_programs_, volume_programs_;
-  Program flat_;
+  Program flat_, lines_;
+  std::optional<volumes::RayCount> ray_;  // view=overview's centre ray
   std::vector<Volume> volumes_by_object_;
   std::string built_for_;
   float far_used_ = 0.0f;

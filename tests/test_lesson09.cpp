@@ -2,6 +2,7 @@
 // measured against the ray-traced truth, and its fix.
 #include "harness.hpp"
 
+#include "../09_shadow_volumes/ray_count.hpp"
 #include "math/shadow_volume.hpp"
 
 namespace shadows {
@@ -143,6 +144,71 @@ TEST(Lesson09, EyeInsideAVolumeBreaksZPassNotZFail) {
   EXPECT_GE(counter(*runner, "volumes_zfail"), 1);
   EXPECT_LT(counter(*runner, "volumes_zfail"), counter(*runner, "volumes_drawn"));
   EXPECT_LE(wrongPct(runner->measureError().metrics), 0.05);
+}
+
+TEST(Lesson09, ARayCountsOneEnterAndOneLeaveThroughAVolumeAndStartsInsideOneItBegunIn) {
+  // By hand: a unit cube centred at (0, 3, 0) under a light straight above it at (0, 10, 0);
+  // its volume is the column |x|, |z| <= 1 (and wider below, from the point light) under it.
+  std::vector<volumes::Triangle> cube;
+  const glm::vec3 c{0.0f, 3.0f, 0.0f};
+  const MeshData box = makeBox(glm::vec3(1.0f));
+  for (size_t i = 0; i + 2 < box.indices.size(); i += 3) {
+    cube.push_back({c + box.vertices[box.indices[i]].position,
+                    c + box.vertices[box.indices[i + 1]].position,
+                    c + box.vertices[box.indices[i + 2]].position});
+  }
+  const glm::vec4 light{0.0f, 10.0f, 0.0f, 1.0f};
+  EXPECT_TRUE(volumes::inVolume(cube, light, {0.0f, 0.5f, 0.0f}));   // under it
+  EXPECT_FALSE(volumes::inVolume(cube, light, {3.0f, 0.5f, 0.0f}));  // beside it
+  EXPECT_FALSE(volumes::inVolume(cube, light, {0.0f, 6.0f, 0.0f}));  // between it and the light
+  // Slide 24: a ray at y = 0.5 from x = -5 to a wall at x = 5 crosses the column: +1, -1.
+  const volumes::RayCount through =
+      volumes::countAlongRay({cube}, light, {-5.0f, 0.5f, 0.0f}, {1.0f, 0.0f, 0.0f}, 10.0f);
+  EXPECT_EQ(through.at_eye, 0);
+  EXPECT_EQ(through.enters, 1);
+  EXPECT_EQ(through.leaves, 1);
+  EXPECT_EQ(through.zpassCount(), 0);
+  EXPECT_EQ(through.at_surface, 0);
+  ASSERT_EQ(through.crossings.size(), 2u);
+  // The volume's walls run from the light at y = 10 through the cube's top edges at y = 4
+  // (x = +-1), its silhouette: at y = 0.5, x = +-(10 - 0.5) / (10 - 4) = +-1.5833, that is
+  // 3.4167 and 6.5833 along the ray (sampled every 0.005).
+  EXPECT_NEAR(through.crossings[0].first, 3.4167f, 0.01f);
+  EXPECT_NEAR(through.crossings[1].first, 6.5833f, 0.01f);
+  // Slide 38: the eye inside the column looking out: it only leaves. z-pass, which starts at
+  // 0, counts -1; the wall it sees is lit (0), and the eye was in 1.
+  const volumes::RayCount out =
+      volumes::countAlongRay({cube}, light, {0.0f, 0.5f, 0.0f}, {1.0f, 0.0f, 0.0f}, 5.0f);
+  EXPECT_EQ(out.at_eye, 1);
+  EXPECT_EQ(out.enters, 0);
+  EXPECT_EQ(out.leaves, 1);
+  EXPECT_EQ(out.zpassCount(), -1);
+  EXPECT_EQ(out.at_surface, 0);
+  EXPECT_EQ(out.at_surface, out.at_eye + out.zpassCount());
+}
+
+TEST(Lesson09, TheOverviewShowsTheEyeInTheTorussVolumeWhereZPassCountsOneShort) {
+  // scene=eye_in_shadow's centre pixel: the eye sits in the torus's volume and its ray leaves
+  // it on the way to a lit floor, so z-pass's count is one short (slide 38); from the default
+  // eye nothing holds the eye and z-pass's count is the surface's.
+  auto runner = startLesson(kLesson, {"scene=eye_in_shadow", "view=overview"}, 160, 120);
+  runner->renderFrame();
+  EXPECT_EQ(runner->glErrors(), 0);
+  const auto ray = testing::reportValue(*runner, "center_ray");
+  EXPECT_EQ(ray.at("at_eye"), 1);
+  EXPECT_GE(ray.at("leaves").get<int>(), 1);
+  EXPECT_EQ(ray.at("zpass_count").get<int>(), ray.at("at_surface").get<int>() - 1);
+  runner.reset();
+  auto outside = startLesson(kLesson, {"view=overview"}, 160, 120);
+  outside->renderFrame();
+  const auto plain = testing::reportValue(*outside, "center_ray");
+  EXPECT_EQ(plain.at("at_eye"), 0);
+  EXPECT_EQ(plain.at("zpass_count"), plain.at("at_surface"));
+  outside.reset();
+  // Any other view reports no ray.
+  auto shaded = startLesson(kLesson, {"scene=eye_in_shadow"}, 160, 120);
+  shaded->renderFrame();
+  EXPECT_FALSE(testing::report(*shaded).contains("center_ray"));
 }
 
 TEST(Lesson09, DroppingACapBreaksZFail) {
