@@ -47,8 +47,9 @@ const kRoundingViews = {
   '10_plane_optimal': ['visibility'],
   // 09's volumes view: translucent volume sides, many of them edge-on to the eye along the
   // torus's silhouette, whose coverage the two rasterizers round differently (81 pixels moved,
-  // mean 0.40).
-  '09_shadow_volumes': ['volumes'],
+  // mean 0.40). Its overview view draws the same translucent sides and one-pixel lines, which
+  // the two rasterizers place differently (72 pixels moved, mean 0.249: at the plain limit).
+  '09_shadow_volumes': ['volumes', 'overview'],
 };
 const kRoundingMoved8Fraction = 0.03, kRoundingMeanLevels = 3.5;
 // "" when `web` is within that tolerance of `native`, else what is off.
