@@ -145,6 +145,21 @@ class BiasOffset final : public Lesson {
                         units_() * depthStep());
   }
 
+  // docs/EXERCISES.md has the intended solutions.
+  std::vector<Exercise> exercises() const override {
+    using B = Figure::Bound;
+    return {{.title = "Acne and peter panning, both, where the light grazes",
+             .goal = "On the grazing preset, where the light skims the floor, bring the false "
+                     "shadow (acne) and the false lit (peter panning) both to 0.07 % or less, "
+                     "moving only the bias.",
+             .setup = {"scene=grazing"},
+             .allowed = {"bias.mode", "bias.factor", "bias.units", "bias.clamp"},
+             .figures = {{"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.07},
+                         {"/error/false_lit_pct", "false lit %", B::AtMost, 0.07}},
+             .hint = "back_faces leaves the floor's far edge lit under the casters; which mode "
+                     "scales the bias with the receiver's slope, not the caster's?"}};
+  }
+
   void report(JsonWriter& json) const override {
     json.value("depth_step", last_step_);
     json.value("clip_translate_offset", last_clip_offset_);

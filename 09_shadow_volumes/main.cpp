@@ -169,6 +169,35 @@ class ShadowVolumes final : public Lesson {
     }
   }
 
+  // docs/EXERCISES.md has the intended solutions.
+  std::vector<Exercise> exercises() const override {
+    using B = Figure::Bound;
+    const std::vector<Figure> exact = {
+        {"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.05},
+        {"/error/false_lit_pct", "false lit %", B::AtMost, 0.05}};
+    std::vector<Figure> cheap = exact;
+    cheap.push_back({"/counters/volume_triangles", "volume triangles", B::AtMost, 1000});
+    return {{.title = "The eye in the shadow (slide 38)",
+             .goal = "The eye sits in the torus's shadow and z-pass inverts the picture. Make "
+                     "every pixel right again (false shadow and false lit both 0.05 % or "
+                     "less) without moving the eye.",
+             .setup = {"scene=eye_in_shadow", "volume.method=zpass"},
+             .allowed = {"volume.method", "volume.light_cap", "volume.dark_cap", "volume.far",
+                         "stencil.op"},
+             .figures = exact,
+             .hint = "z-pass counts from the eye, and the near plane cut the face the eye "
+                     "entered through. Count from the other end (slide 39)."},
+            {.title = "The same shadows with fewer triangles (slides 46-47)",
+             .goal = "Every caster's triangles cast a volume of their own: 33 thousand volume "
+                     "triangles. Get the same shadows (both errors 0.05 % or less) with at most "
+                     "1000 volume triangles.",
+             .setup = {"volume.geometry=per_triangle"},
+             .allowed = {"volume.geometry", "volume.method", "volume.cull"},
+             .figures = cheap,
+             .hint = "Two neighbouring triangles that both face the light share an edge whose "
+                     "two side quads cancel. Which edges remain?"}};
+  }
+
   void report(JsonWriter& json) const override {
     json.value("volume_open_edges", open_edges_);
     json.value("volume_open_casters", open_names_);

@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
     std::string problem = shadows::parseCommandLine(argc, argv, options);
     if (problem.empty()) {
       g_runner = make(options);
-      problem = g_runner->applySets(options.sets);
+      problem = g_runner->applyStartingSettings();
       if (problem.empty()) problem = g_runner->checkConsistency();
     }
     if (!problem.empty()) {
@@ -117,6 +117,7 @@ int main(int argc, char** argv) {
       if (g_runner) {
         defaults = options;
         defaults.sets.clear();
+        defaults.exercise = 0;
       }
       g_runner = make(defaults);
     }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +24,7 @@ class JsonWriter {
   JsonWriter& endArray() { return close(']'); }
   JsonWriter& value(const std::string& key, double v) {
     item(key);
+    record(key, v);
     if (!std::isfinite(v)) {
       out_ += "null";  // JSON has no NaN; a non-finite number reads as null
     } else {
@@ -34,12 +36,14 @@ class JsonWriter {
   }
   JsonWriter& value(const std::string& key, long long v) {
     item(key);
+    record(key, static_cast<double>(v));
     out_ += std::to_string(v);
     return *this;
   }
   JsonWriter& value(const std::string& key, int v) { return value(key, static_cast<long long>(v)); }
   JsonWriter& value(const std::string& key, bool v) {
     item(key);
+    record(key, v ? 1.0 : 0.0);
     out_ += v ? "true" : "false";
     return *this;
   }
@@ -53,10 +57,19 @@ class JsonWriter {
   JsonWriter& value(const std::string& key, const std::optional<long long>& v) {
     if (v) return value(key, *v);
     item(key);
+    record(key, kNoFigure);
     out_ += "null";
     return *this;
   }
   const std::string& str() const { return out_; }
+  // A number written so far, by its JSON pointer ("/error/false_lit_pct"; members of objects
+  // only, not of arrays): what an exercise's goal reads (lesson/exercise.hpp). Null is NaN;
+  // a name not written is empty.
+  std::optional<double> number(const std::string& pointer) const {
+    const auto it = numbers_.find(pointer);
+    if (it == numbers_.end()) return std::nullopt;
+    return it->second;
+  }
 
   // A JSON string. Bytes that are not UTF-8 (a file name in another encoding) cannot be
   // JSON text: each is written as the four characters \xNN, as printable() shows it.
@@ -90,10 +103,16 @@ class JsonWriter {
     item(key);
     out_ += bracket;
     first_.push_back(true);
+    // The path of what is inside: "" for the top object, "#" (recorded nowhere) in arrays.
+    const bool inArray = !path_.empty() && path_.back() == "#";
+    path_.push_back(bracket == '[' || inArray
+                        ? "#"
+                        : (path_.empty() ? "" : path_.back()) + (key.empty() ? "" : "/" + key));
     return *this;
   }
   JsonWriter& close(char bracket) {
     first_.pop_back();
+    path_.pop_back();
     out_ += '\n' + std::string(2 * first_.size(), ' ') + bracket;
     return *this;
   }
@@ -105,8 +124,14 @@ class JsonWriter {
     }
     if (!key.empty()) out_ += quote(key) + ": ";
   }
+  void record(const std::string& key, double v) {
+    if (!path_.empty() && path_.back() != "#" && !key.empty())
+      numbers_[path_.back() + "/" + key] = v;
+  }
   std::string out_;
   std::vector<bool> first_;
+  std::vector<std::string> path_;
+  std::map<std::string, double> numbers_;
 };
 
 }  // namespace shadows

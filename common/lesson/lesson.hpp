@@ -15,6 +15,7 @@
 #include "gl/gl.hpp"
 #include "gl/measure.hpp"
 #include "gl/program.hpp"
+#include "lesson/exercise.hpp"
 #include "math/shadow_math.hpp"
 #include "math/texel_density.hpp"
 #include "truth/truth.hpp"
@@ -168,6 +169,9 @@ class Lesson {
   // Shared parameters (light.fov, light.near, ...) this lesson has no use for: the runner
   // does not offer them.
   virtual std::vector<std::string> unusedSharedParams() const { return {}; }
+  // Goals a student reaches with a few sliders, graded by the truth (lesson/exercise.hpp):
+  // --exercise N shows the Nth in the panel, --grade N grades a run by it.
+  virtual std::vector<Exercise> exercises() const { return {}; }
   // The scene presets the lesson offers, its default first.
   virtual std::vector<std::string> scenes() const { return scenePresets(); }
   // A path next to the lesson's main.cpp, or its copy in a bundle (program.hpp).

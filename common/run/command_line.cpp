@@ -61,8 +61,15 @@ const char* kUsage =
     "  --truth-result FILE  the trace the metrics came from (Embree's, or --truth-from's)\n"
     "  --truth-from FILE    take the truth from a trace of this run's job (web/truth's)\n"
     "                       instead of tracing it; a trace of another job is bad input\n"
+    "  --exercise N         start the lesson's exercise N: its goal, measured live, in the\n"
+    "                       panel (docs/EXERCISES.md)\n"
+    "  --grade N            grade a run by exercise N: headless (640x480 unless --size),\n"
+    "                       measured against the truth; the last line is the verdict, the\n"
+    "                       report's \"exercise\" says it too. Exit 0 met, 1 not met, 2 bad\n"
+    "                       input (no such exercise, a --set the exercise does not allow)\n"
     "  --help               this text\n"
-    "exit codes: 0 ok, 1 runtime failure (no context, shader error, GL error), 2 bad input\n";
+    "exit codes: 0 ok (--grade: met), 1 runtime failure (no context, shader error, GL\n"
+    "error; --grade: not met), 2 bad input\n";
 
 // "" or why `path` cannot be the output `flag` names (exit 2 before anything is rendered);
 // `target` says where the bytes will go.
@@ -129,9 +136,18 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
       device_given = true;
     } else if (arg == "--size") {
       why = readSize(args, o.width, o.height);
+      o.size_given = true;
     } else if (arg == "--frames") {
       why = readCount(args, o.frames, 100000);
       o.frames_given = true;
+    } else if (arg == "--exercise" || arg == "--grade") {
+      const int before = o.exercise;
+      why = readCount(args, o.exercise, 99);
+      if (why.empty() && before != 0 && before != o.exercise) {
+        return "--exercise and --grade name different exercises (" + std::to_string(before) +
+               " and " + std::to_string(o.exercise) + ")";
+      }
+      if (arg == "--grade") o.grade = true;
     } else if (arg == "--orbit") {
       why = readCount(args, o.orbit, 90);
     } else if (arg == "--set") {
@@ -147,6 +163,12 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
       return unknownOption(arg);
     }
     if (!why.empty()) return why;
+  }
+  if (o.grade) {
+    // A verdict is a headless run measured against the truth, at the READMEs' size.
+    o.headless = true;
+    o.truth = true;
+    if (!o.size_given) o.width = 640, o.height = 480;
   }
   if (device_given && o.backend != "egl-device") {
     return "--device chooses an EGL device: it needs --backend egl-device";
@@ -197,7 +219,7 @@ int runLessonMain(int argc, char** argv, const std::string& lesson) {
   }
   try {
     Runner runner(lessons[0], makeLesson(lessons[0]), options);
-    if (std::string e = runner.applySets(options.sets); !e.empty()) return complain(e, 2);
+    if (std::string e = runner.applyStartingSettings(); !e.empty()) return complain(e, 2);
     if (std::string e = runner.checkConsistency(); !e.empty()) return complain(e, 2);
     if (options.list_params) {
       std::printf("%s", runner.params().listText().c_str());

@@ -202,9 +202,13 @@ const ErrorState& Runner::measureError() {
   if (truth_.thread_job.valid()) truth_.install(truth_.thread_job.get(), errorKey());
   // A page cannot wait for its worker; its answer, when it comes, answers no job any more.
   truth_.page_job.reset();
-  if (truth_.current(errorKey())) return truth_.error();
+  if (truth_.current(errorKey())) {
+    judgeExercise();
+    return truth_.error();
+  }
   TruthResult result = traceTruth(gatherTruthInputs());
   truth_.install(std::move(result), errorKey());
+  judgeExercise();
   return truth_.error();
 }
 
@@ -221,6 +225,7 @@ bool Runner::pollErrorMeasure() {
     return false;
   }
   truth_.install(truth_.thread_job.get(), errorKey());
+  judgeExercise();
   return true;
 }
 
@@ -255,6 +260,7 @@ bool Runner::pollErrorMeasure() {
   inputs->given = parseTruthTrace(answer.trace_bytes);
   TruthResult result = traceTruth(std::move(*inputs));
   truth_.install(std::move(result), errorKey());
+  judgeExercise();
   return true;
 }
 

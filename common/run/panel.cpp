@@ -165,6 +165,36 @@ void Runner::drawPanel(Frame& frame) {
       ImGui::TextDisabled("error: measuring...");
     }
   }
+  // The exercise (--exercise N), under the error it is judged by: its goal, each figure now,
+  // met or not, on the last truth measured.
+  if (const Exercise* ex = exercise()) {
+    ImGui::Separator();
+    ImGui::TextWrapped("Exercise %d: %s", options_.exercise, ex->title.c_str());
+    ImGui::TextWrapped("%s", ex->goal.c_str());
+    std::string allowed;
+    for (const std::string& a : ex->allowed) allowed += (allowed.empty() ? "" : ", ") + a;
+    const auto wrapped = [](ImVec4 colour, const std::string& text) {
+      ImGui::PushStyleColor(ImGuiCol_Text, colour);
+      ImGui::TextWrapped("%s", text.c_str());
+      ImGui::PopStyleColor();
+    };
+    const ImVec4 met_colour{0.4f, 1.0f, 0.4f, 1.0f}, unmet_colour{1.0f, 0.45f, 0.4f, 1.0f};
+    wrapped(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled),
+            "move: " + allowed + (ex->camera_free ? ", the camera" : " (the camera stays)"));
+    const Verdict& v = exercise_.verdict;
+    if (exercise_.judged_at < 0) {
+      ImGui::TextDisabled("measuring...");
+    } else {
+      for (const FigureResult& f : v.figures) wrapped(f.met ? met_colour : unmet_colour, f.line());
+      wrapped(v.met ? met_colour : unmet_colour,
+              std::string(v.met ? "MET" : "not met yet") +
+                  (truth_.key() == errorKey() ? "" : " (measured before the last change)"));
+      // After a minute without it, the hint.
+      if (!v.met && !ex->hint.empty() && ImGui::GetTime() > 60.0) {
+        ImGui::TextWrapped("hint: %s", ex->hint.c_str());
+      }
+    }
+  }
   // Where no technique's answer is defined, the panel says so before its numbers.
   ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.2f, 1.0f));
   if (const std::string on = lightOnSurface(); !on.empty()) {

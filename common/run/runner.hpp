@@ -38,6 +38,9 @@ struct RunOptions {
   }
   std::vector<std::string> sets;
   bool list_params = false, help = false;
+  bool size_given = false;  // --size on the command line
+  int exercise = 0;         // --exercise N or --grade N: the lesson's exercise N (1-based)
+  bool grade = false;       // --grade N: headless, the verdict its exit code
 };
 
 // Parses argv. Returns "" or one line naming what is wrong (the caller exits 2).
@@ -111,6 +114,15 @@ class Runner final : public LessonHost {
   int glErrors() const;
   void writeReport(JsonWriter& json);
 
+  // The exercise --exercise or --grade chose (null: none), and its verdict on the last truth.
+  const Exercise* exercise() const { return exercise_.chosen ? &*exercise_.chosen : nullptr; }
+  const Verdict& exerciseVerdict() const { return exercise_.verdict; }
+  // "" or why the command line's exercise cannot run: no such exercise, or (grading) a --set
+  // of a parameter it does not let a student move.
+  std::string exerciseProblem() const;
+  // The exercise's own settings, then the command line's --set list: what a run starts from
+  // ("" or the first problem, exerciseProblem()'s included).
+  std::string applyStartingSettings();
   // "" or one line on parameters that parse alone but not together (near >= far).
   std::string checkConsistency() const;
   // Runs the whole program (window or headless) and returns the exit code.
@@ -204,6 +216,13 @@ class Runner final : public LessonHost {
   void drawTexels(const Frame& frame, bool heatmap);
   TruthMeasure truth_;
   int runHeadlessOrWindow();
+  int runGrade();
+  struct ExerciseState {
+    std::optional<Exercise> chosen;
+    Verdict verdict;
+    long long judged_at = -1;  // truthsMeasured() when the verdict was made
+  } exercise_;
+  void judgeExercise();             // after a truth is installed: the verdict on it
   TruthInputs gatherTruthInputs();  // render thread: what traceTruth needs of the GPU
   struct WindowState {
     bool open = false;

@@ -1,0 +1,168 @@
+// Exercises graded by the truth (docs/EXERCISES.md, lesson/exercise.hpp), through the lesson
+// binaries as an instructor runs them: every solution line of the instructor's section is met,
+// the exercise's own starting point is not (no exercise is met without work), every exercise of
+// every lesson has a solution there, and what is not the student's to set is refused.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int exit_code = -1;
+  std::string output;
+};
+
+Result run(const std::string& lesson, const std::string& args) {
+  const std::string command = std::string(SHADOWS_BINARY_DIR) + "/" + lesson + " " + args + " 2>&1";
+  Result result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  std::array<char, 4096> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) result.output += buffer.data();
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+std::string lastLine(const std::string& text) {
+  const size_t end = text.find_last_not_of('\n');
+  if (end == std::string::npos) return {};
+  const size_t start = text.rfind('\n', end);
+  return text.substr(start == std::string::npos ? 0 : start + 1,
+                     end - (start == std::string::npos ? 0 : start + 1) + 1);
+}
+
+struct Solution {
+  std::string lesson;
+  int exercise = 0;
+  std::string sets;  // "--set a=b --set c=d"
+};
+
+// The instructor's section's command lines: `build/LESSON --grade N --set ...`.
+std::vector<Solution> solutions() {
+  std::ifstream in(std::string(SHADOWS_SOURCE_DIR) + "/docs/EXERCISES.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string all = text.str();
+  const size_t part = all.find("## For the instructor");
+  EXPECT_NE(part, std::string::npos) << "docs/EXERCISES.md has no instructor's section";
+  std::vector<Solution> found;
+  const std::regex line("`build/([0-9]{2}_[a-z0-9_]+) --grade ([0-9]+)((?: --set [^ `]+)*)`");
+  const std::string tail = part == std::string::npos ? "" : all.substr(part);
+  for (auto it = std::sregex_iterator(tail.begin(), tail.end(), line); it != std::sregex_iterator();
+       ++it) {
+    found.push_back({(*it)[1], std::stoi((*it)[2]), (*it)[3]});
+  }
+  return found;
+}
+
+// How many exercises a lesson has, as its own message says ("has exercises 1..K", "has no
+// exercises").
+int exerciseCount(const std::string& lesson) {
+  const Result r = run(lesson, "--grade 99 --no-truth");
+  EXPECT_EQ(r.exit_code, 2) << lesson << ": " << r.output;
+  std::smatch m;
+  if (std::regex_search(r.output, m, std::regex("has exercises 1\\.\\.([0-9]+)")))
+    return std::stoi(m[1]);
+  EXPECT_NE(r.output.find("has no exercises"), std::string::npos) << r.output;
+  return 0;
+}
+
+std::vector<std::string> lessons() {
+  std::vector<std::string> names;
+  std::stringstream list(SHADOWS_LESSON_NAMES);
+  for (std::string name; std::getline(list, name, ',');) names.push_back(name);
+  return names;
+}
+
+TEST(Exercises, EverySolutionIsMetAndEveryStartingPointIsNot) {
+  const std::vector<Solution> all = solutions();
+  ASSERT_GE(all.size(), 3u) << "docs/EXERCISES.md lists no solutions";
+  const fs::path report =
+      fs::temp_directory_path() / ("shadows_exercise_" + std::to_string(getpid()) + ".json");
+  std::set<std::pair<std::string, int>> solved, started;
+  for (const Solution& s : all) {
+    const std::string args = "--grade " + std::to_string(s.exercise) + s.sets +
+                             " --frames 1 --out /dev/null --report " + report.string();
+    const Result r = run(s.lesson, args);
+    EXPECT_EQ(r.exit_code, 0) << s.lesson << " " << args << "\n" << r.output;
+    EXPECT_NE(lastLine(r.output).find(": MET: "), std::string::npos) << r.output;
+    std::ifstream in(report);
+    const nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
+    ASSERT_FALSE(json.is_discarded()) << s.lesson;
+    EXPECT_EQ(json["exercise"]["number"], s.exercise);
+    EXPECT_EQ(json["exercise"]["met"], true);
+    EXPECT_FALSE(json["exercise"]["measured"].empty());
+    solved.insert({s.lesson, s.exercise});
+    if (!started.insert({s.lesson, s.exercise}).second) continue;
+    // The starting point, no setting of the student's: not met, exit 1.
+    const Result start =
+        run(s.lesson, "--grade " + std::to_string(s.exercise) + " --frames 1 --out /dev/null");
+    EXPECT_EQ(start.exit_code, 1) << s.lesson << " exercise " << s.exercise
+                                  << " is met without work:\n"
+                                  << start.output;
+    EXPECT_NE(lastLine(start.output).find(": NOT MET: "), std::string::npos) << start.output;
+  }
+  fs::remove(report);
+  // Every exercise of every lesson has its solution in the instructor's section.
+  for (const std::string& lesson : lessons()) {
+    for (int n = 1, count = exerciseCount(lesson); n <= count; ++n) {
+      EXPECT_TRUE(solved.count({lesson, n}))
+          << lesson << " exercise " << n << " has no solution line in docs/EXERCISES.md";
+    }
+  }
+}
+
+TEST(Exercises, WhatIsNotTheStudentsToSetIsRefusedInOneLine) {
+  // A setting outside the exercise's sliders, the camera where it stays, an exercise the
+  // lesson does not have: exit 2, one line naming it, nothing rendered.
+  for (const auto& [lesson, args, says] :
+       std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"04_bias_offset", "--grade 1 --set shadow.size=4096", "not shadow.size"},
+           {"04_bias_offset", "--grade 1 --set camera.pos=0,1,2", "not camera.pos"},
+           {"09_shadow_volumes", "--grade 1 --set scene=torus_pyramid", "not scene"},
+           {"04_bias_offset", "--grade 7", "has exercises 1..1"},
+           {"03_shadow_map_basic", "--exercise 1", "has no exercises"},
+           {"04_bias_offset", "--exercise 1 --grade 2", "name different exercises"}}) {
+    const Result r = run(lesson, args + " --out /dev/null");
+    EXPECT_EQ(r.exit_code, 2) << lesson << " " << args << "\n" << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_NE(r.output.find(says), std::string::npos) << r.output;
+  }
+}
+
+TEST(Exercises, TheExerciseRunsInTheLessonFromItsOwnStartingPoint) {
+  // --exercise N (the panel's) starts from the exercise's settings, and the report says how
+  // far the run is from the goal; the view may be anything.
+  const fs::path report =
+      fs::temp_directory_path() / ("shadows_exercise_live_" + std::to_string(getpid()) + ".json");
+  const Result r = run("09_shadow_volumes",
+                       "--headless --exercise 1 --frames 1 --size 320x240 --set view=count --out "
+                       "/dev/null --report " +
+                           report.string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream in(report);
+  const nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
+  ASSERT_FALSE(json.is_discarded());
+  EXPECT_EQ(json["params"]["scene"], "eye_in_shadow");
+  EXPECT_EQ(json["params"]["volume.method"], "zpass");
+  EXPECT_EQ(json["exercise"]["met"], false);
+  EXPECT_GT(json["exercise"]["measured"]["/error/false_shadow_pct"].get<double>(), 10.0);
+  fs::remove(report);
+}
+
+}  // namespace
