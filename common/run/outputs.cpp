@@ -184,18 +184,6 @@ int Runner::run() {
   }
 }
 
-// --grade N: the headless run (its picture, outputs and summary line), then the verdict of
-// exercise N on its truth, one line, and the exit code: 0 met, 1 not.
-int Runner::runGrade() {
-  if (const int code = runHeadless(); code != 0) return code;
-  const Verdict& v = exercise_.verdict;
-  std::string figures;
-  for (const FigureResult& f : v.figures) figures += (figures.empty() ? "" : "; ") + f.line();
-  std::printf("%s exercise %d (%s): %s: %s\n", name_.c_str(), options_.exercise,
-              exercise_.chosen->title.c_str(), v.met ? "MET" : "NOT MET", figures.c_str());
-  return v.met ? 0 : 1;
-}
-
 int Runner::runHeadlessOrWindow() {
   const char* display = std::getenv("DISPLAY");
   const bool has_display = display != nullptr && *display != '\0';

@@ -434,46 +434,4 @@ Image Runner::readImage() const {
   return image;
 }
 
-std::string Runner::exerciseProblem() const {
-  if (options_.exercise == 0) return {};
-  const std::string flag =
-      std::string(options_.grade ? "--grade " : "--exercise ") + std::to_string(options_.exercise);
-  if (!exercise_.chosen) {
-    const size_t count = lesson_->exercises().size();
-    return flag + ": " + name_ + " has " +
-           (count == 0 ? std::string("no exercises")
-                       : "exercises 1.." + std::to_string(count) + " (docs/EXERCISES.md)");
-  }
-  if (!options_.grade) return {};
-  // A submission moves only what the exercise lets a student move.
-  for (const std::string& set : options_.sets) {
-    const std::string name = set.substr(0, set.find('='));
-    if (allowedIn(*exercise_.chosen, name)) continue;
-    std::string allowed;
-    for (const std::string& a : exercise_.chosen->allowed)
-      allowed += (allowed.empty() ? "" : ", ") + a;
-    return flag + ": the exercise lets you set " + allowed +
-           (exercise_.chosen->camera_free ? ", camera.* and view" : " and view (not the camera)") +
-           "; not " + name;
-  }
-  return {};
-}
-
-std::string Runner::applyStartingSettings() {
-  if (std::string problem = exerciseProblem(); !problem.empty()) return problem;
-  // An exercise starts from its own settings; the student's come after them.
-  std::vector<std::string> sets =
-      exercise_.chosen ? exercise_.chosen->setup : std::vector<std::string>{};
-  sets.insert(sets.end(), options_.sets.begin(), options_.sets.end());
-  return applySets(sets);
-}
-
-void Runner::judgeExercise() {
-  if (!exercise_.chosen || exercise_.judged_at == truth_.measured()) return;
-  JsonWriter json;
-  writeReport(json);  // the verdict reads the report's own numbers
-  exercise_.verdict = evaluate(*exercise_.chosen, json);
-  exercise_.judged_at = truth_.measured();
-}
-
 }  // namespace shadows
