@@ -478,11 +478,11 @@ class ShadowVolumes final : public Lesson {
       all.push_back({positions[t.x], positions[t.y], positions[t.z]});
     const float reach = 4.0f * f.scene.bounds().radius() + glm::length(eye);
     const float surface = volumes::hit(all, eye, forward, 0.0f, reach).value_or(reach);
-    std::vector<std::vector<volumes::Triangle>> casters;
+    std::vector<volumes::Caster> casters;
     const Light& l = f.light;
     for (const SceneObject& o : f.scene.objects) {
       if (!o.castsFrom(l.position, l.directional, l.direction)) continue;
-      auto& caster = casters.emplace_back();
+      std::vector<volumes::Triangle> caster;
       const auto world = [&](std::uint32_t i) {
         return glm::vec3(o.model * glm::vec4(o.mesh.vertices[i].position, 1.0f));
       };
@@ -490,6 +490,7 @@ class ShadowVolumes final : public Lesson {
         caster.push_back(
             {world(o.mesh.indices[i]), world(o.mesh.indices[i + 1]), world(o.mesh.indices[i + 2])});
       }
+      casters.emplace_back(std::move(caster));
     }
     const glm::vec4 light =
         l.directional ? glm::vec4(-l.direction, 0.0f) : glm::vec4(l.position, 1.0f);

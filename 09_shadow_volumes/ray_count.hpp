@@ -40,16 +40,36 @@ inline std::optional<float> hit(const std::vector<Triangle>& triangles, glm::vec
   return nearest;
 }
 
-// Whether `point` lies in the volume of the caster made of `triangles`: its way to the light
-// (`light`: (position, 1) or (direction toward the light, 0)) crosses the caster.
-inline bool inVolume(const std::vector<Triangle>& triangles, glm::vec4 light, glm::vec3 point) {
+// A caster's triangles and the sphere around them (a way to the light that misses the sphere
+// misses the caster: most of them, most of the time).
+struct Caster {
+  std::vector<Triangle> triangles;
+  glm::vec3 centre{0.0f};
+  float radius = 0.0f;
+  explicit Caster(std::vector<Triangle> t) : triangles(std::move(t)) {
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const Triangle& tri : triangles) {
+      for (const glm::vec3& p : {tri.a, tri.b, tri.c}) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    }
+    centre = 0.5f * (lo + hi);
+    radius = triangles.empty() ? 0.0f : 0.5f * glm::length(hi - lo);
+  }
+};
+
+// Whether `point` lies in the volume of `caster`: its way to the light (`light`: (position, 1)
+// or (direction toward the light, 0)) crosses the caster.
+inline bool inVolume(const Caster& caster, glm::vec4 light, glm::vec3 point) {
   const bool directional = light.w == 0.0f;
   const glm::vec3 to = directional ? glm::vec3(light) : glm::vec3(light) - point;
   const float length = glm::length(to);
   if (length < 1e-6f) return false;
+  const glm::vec3 dir = to / length;
   const float far = directional ? 1e30f : length;
+  // The nearest point of the way to the sphere's centre: farther than the radius, no hit.
+  const float along = std::clamp(glm::dot(caster.centre - point, dir), 0.0f, far);
+  if (glm::length(point + along * dir - caster.centre) > caster.radius) return false;
   // A little off the point, so a surface is not its own caster where it faces the light.
-  return hit(triangles, point, to / length, 1e-4f, far).has_value();
+  return hit(caster.triangles, point, dir, 1e-4f, far).has_value();
 }
 
 struct RayCount {
@@ -66,8 +86,8 @@ struct RayCount {
 // The count along `dir` (unit) from `eye` to the surface at distance `surface`, one list of
 // triangles per caster, sampled `samples` times (a crossing between two samples is found; two
 // crossings of one volume closer than the step are not).
-inline RayCount countAlongRay(const std::vector<std::vector<Triangle>>& casters, glm::vec4 light,
-                              glm::vec3 eye, glm::vec3 dir, float surface, int samples = 2000) {
+inline RayCount countAlongRay(const std::vector<Caster>& casters, glm::vec4 light, glm::vec3 eye,
+                              glm::vec3 dir, float surface, int samples = 2000) {
   const auto countAt = [&](glm::vec3 p) {
     int n = 0;
     for (const auto& caster : casters) n += inVolume(caster, light, p) ? 1 : 0;

@@ -137,7 +137,8 @@ TEST(Exercises, WhatIsNotTheStudentsToSetIsRefusedInOneLine) {
            {"09_shadow_volumes", "--grade 1 --set scene=torus_pyramid", "not scene"},
            {"04_bias_offset", "--grade 7", "has exercises 1..1"},
            {"03_shadow_map_basic", "--exercise 1", "has no exercises"},
-           {"04_bias_offset", "--exercise 1 --grade 2", "name different exercises"}}) {
+           {"04_bias_offset", "--exercise 1 --grade 2", "--grade: a second, different exercise"},
+           {"04_bias_offset", "--exercise 1 --no-truth", "cannot run with --no-truth"}}) {
     const Result r = run(lesson, args + " --out /dev/null");
     EXPECT_EQ(r.exit_code, 2) << lesson << " " << args << "\n" << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
@@ -163,6 +164,15 @@ TEST(Exercises, TheExerciseRunsInTheLessonFromItsOwnStartingPoint) {
   EXPECT_EQ(json["exercise"]["met"], false);
   EXPECT_GT(json["exercise"]["measured"]["/error/false_shadow_pct"].get<double>(), 10.0);
   fs::remove(report);
+  // A grade is measured on the shaded frame whatever the view says: in `truth` (where the
+  // lesson draws nothing) or 09's `overview` (no stencil pass) a counter figure would be
+  // missing, and a right answer would read not met.
+  for (const char* view : {"truth", "overview"}) {
+    const Result graded = run(
+        "09_shadow_volumes", std::string("--grade 2 --set volume.geometry=silhouette --set view=") +
+                                 view + " --frames 1 --out /dev/null");
+    EXPECT_EQ(graded.exit_code, 0) << view << "\n" << graded.output;
+  }
 }
 
 }  // namespace

@@ -149,14 +149,15 @@ TEST(Lesson09, EyeInsideAVolumeBreaksZPassNotZFail) {
 TEST(Lesson09, ARayCountsOneEnterAndOneLeaveThroughAVolumeAndStartsInsideOneItBegunIn) {
   // By hand: a unit cube centred at (0, 3, 0) under a light straight above it at (0, 10, 0);
   // its volume is the column |x|, |z| <= 1 (and wider below, from the point light) under it.
-  std::vector<volumes::Triangle> cube;
+  std::vector<volumes::Triangle> triangles;
   const glm::vec3 c{0.0f, 3.0f, 0.0f};
   const MeshData box = makeBox(glm::vec3(1.0f));
   for (size_t i = 0; i + 2 < box.indices.size(); i += 3) {
-    cube.push_back({c + box.vertices[box.indices[i]].position,
-                    c + box.vertices[box.indices[i + 1]].position,
-                    c + box.vertices[box.indices[i + 2]].position});
+    triangles.push_back({c + box.vertices[box.indices[i]].position,
+                         c + box.vertices[box.indices[i + 1]].position,
+                         c + box.vertices[box.indices[i + 2]].position});
   }
+  const volumes::Caster cube(triangles);
   const glm::vec4 light{0.0f, 10.0f, 0.0f, 1.0f};
   EXPECT_TRUE(volumes::inVolume(cube, light, {0.0f, 0.5f, 0.0f}));   // under it
   EXPECT_FALSE(volumes::inVolume(cube, light, {3.0f, 0.5f, 0.0f}));  // beside it

@@ -28,7 +28,8 @@ struct Exercise {
   // Settings the exercise starts from (a scene, a broken method): applied first, not the
   // student's to change unless also allowed.
   std::vector<std::string> setup;
-  // The parameters a student may move; `view` always may (it changes no figure), the camera
+  // The parameters a student may move; `view` always may (a grade is measured on the shaded
+  // frame, whatever it says; the panel's figures on the frame shown), the camera
   // (camera.*) only where the exercise says so: the figures are measured in the picture the
   // camera sees, and looking away from a problem is no answer.
   std::vector<std::string> allowed;

@@ -144,8 +144,8 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
       const int before = o.exercise;
       why = readCount(args, o.exercise, 99);
       if (why.empty() && before != 0 && before != o.exercise) {
-        return "--exercise and --grade name different exercises (" + std::to_string(before) +
-               " and " + std::to_string(o.exercise) + ")";
+        return arg + ": a second, different exercise (" + std::to_string(before) + " and " +
+               std::to_string(o.exercise) + ")";
       }
       if (arg == "--grade") o.grade = true;
     } else if (arg == "--orbit") {
@@ -169,6 +169,9 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
     o.headless = true;
     o.truth = true;
     if (!o.size_given) o.width = 640, o.height = 480;
+  }
+  if (o.exercise > 0 && !o.truth) {
+    return "--exercise judges by the truth: it cannot run with --no-truth";
   }
   if (device_given && o.backend != "egl-device") {
     return "--device chooses an EGL device: it needs --backend egl-device";

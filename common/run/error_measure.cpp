@@ -244,6 +244,7 @@ void Runner::beginErrorMeasure() {
     // No worker: on this thread, the page waits.
     TruthResult result = traceTruth(std::move(*inputs));
     truth_.install(std::move(result), errorKey());
+    judgeExercise();
   }
 }
 

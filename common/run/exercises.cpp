@@ -38,6 +38,9 @@ std::string Runner::applyStartingSettings() {
   std::vector<std::string> sets =
       exercise_.chosen ? exercise_.chosen->setup : std::vector<std::string>{};
   sets.insert(sets.end(), options_.sets.begin(), options_.sets.end());
+  // A grade is measured on the lesson's own frame: a debug view (or the runner's truth and
+  // error views, where the lesson draws nothing) would leave its counters out.
+  if (options_.grade && exercise_.chosen) sets.push_back("view=shaded");
   return applySets(sets);
 }
 
@@ -53,7 +56,15 @@ void Runner::judgeExercise() {
 // exercise N on its truth, one line, and the exit code: 0 met, 1 not.
 int Runner::runGrade() {
   if (const int code = runHeadless(); code != 0) return code;
-  const Verdict& v = exercise_.verdict;
+  if (!truth_.error().valid) {
+    std::printf("%s exercise %d: no verdict: %s\n", name_.c_str(), options_.exercise,
+                haveTruth() ? "the truth was not measured" : truthUnavailable().c_str());
+    return 1;
+  }
+  // On the numbers of the last frame, as the report written just before has them.
+  JsonWriter json;
+  writeReport(json);
+  const Verdict v = evaluate(*exercise_.chosen, json);
   std::string figures;
   for (const FigureResult& f : v.figures) figures += (figures.empty() ? "" : "; ") + f.line();
   std::printf("%s exercise %d (%s): %s: %s\n", name_.c_str(), options_.exercise,
