@@ -1,7 +1,9 @@
 // The command-line contract of every lesson binary: bad input is exit 2, one line that
 // names what is wrong, and no file left behind.
 #include <gtest/gtest.h>
+
 #include <unistd.h>
+#include "cli_run.hpp"
 
 #include <sys/wait.h>
 
@@ -26,23 +28,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-Result run(const std::string& lesson, const std::string& args, const std::string& env = {}) {
-  const std::string command =
-      env + std::string(SHADOWS_BINARY_DIR) + "/" + lesson + " " + args + " 2>&1";
-  Result result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) result.output += buffer.data();
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+using shadows::testing::Result;
+using shadows::testing::run;
 
 // A report file read by a real JSON parser; a report that is not JSON fails the test.
 nlohmann::json readReport(const fs::path& path) {

@@ -3,7 +3,9 @@
 // the exercise's own starting point is not (no exercise is met without work), every exercise of
 // every lesson has a solution there, and what is not the student's to set is refused.
 #include <gtest/gtest.h>
+
 #include <sys/wait.h>
+#include "cli_run.hpp"
 
 #include <array>
 #include <cstdio>
@@ -21,22 +23,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int exit_code = -1;
-  std::string output;
-};
-
-Result run(const std::string& lesson, const std::string& args) {
-  const std::string command = std::string(SHADOWS_BINARY_DIR) + "/" + lesson + " " + args + " 2>&1";
-  Result result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) result.output += buffer.data();
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+using shadows::testing::Result;
+using shadows::testing::run;
 
 std::string lastLine(const std::string& text) {
   const size_t end = text.find_last_not_of('\n');
