@@ -1,9 +1,9 @@
 // The numbers the READMEs quote, re-measured. A claim sits in the README next to the number
 // it backs, as an HTML comment on a line of its own, which a reader does not see:
-//   <!-- claim: 06_dual_texture_8bit --set light.near=0.5 => /error/false_lit_pct 0.59 +- 0.1 -->
-// The test runs the lesson headless with those flags (--frames 1, the README's own --size if
-// it gives one, else 640x480), reads the report field by its JSON pointer and checks it within
-// the stated precision. Only what is deterministic can be claimed: error numbers and work
+//   <!-- claim: 06_dual_texture_8bit --size 640x480 --set light.near=0.5 => /error/false_lit_pct 0.59 +- 0.1 -->
+// The test runs the lesson headless with exactly those flags (and --frames 1, which changes
+// no error or counter): nothing unstated, so the command a reader copies gives the number. It
+// reads the report field by its JSON pointer and checks it within the stated precision. Only what is deterministic can be claimed: error numbers and work
 // counters, never timings (a field ending in _ms or named *_overhead is refused). A timing
 // is claimed against the CSV it was read from instead, never re-timed:
 //   <!-- csv-claim: docs/bench_precision_far.csv map=16bit_two_digits => median(frame_ms) 53.9 +-
@@ -87,9 +87,8 @@ TEST(ReadmeClaims, EveryQuotedErrorAndCounterStillMeasuresSo) {
                               c.flags + " => " + c.pointer + ")";
     ASSERT_EQ(c.pointer.find("_ms"), std::string::npos) << where << ": timings are not claims";
     ASSERT_EQ(c.pointer.find("overhead"), std::string::npos) << where;
-    const std::string size = c.flags.find("--size") == std::string::npos ? " --size 640x480" : "";
     const std::string command = std::string(SHADOWS_BINARY_DIR) + "/" + c.lesson +
-                                " --headless --frames 1" + size + " " + c.flags +
+                                " --headless --frames 1 " + c.flags +
                                 " --out /dev/null --report " + report.string() + " >/dev/null 2>&1";
     auto run = runs.find(command);
     if (run == runs.end()) {
