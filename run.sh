@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ./run.sh [lesson] [flags]: set up, build, then run a lesson (default 03) in a window;
+# ./run.sh [lesson] [flags]: set up, build, then run a lesson (default 01, the first) in a window;
 # without a display, render it (or, with no argument at all, every lesson) headless into
 # out/<lesson>.png and out/<lesson>.json.
 set -euo pipefail
@@ -16,7 +16,7 @@ lessons=()
 for dir in [0-9][0-9]_*/; do
   [[ -x build/${dir%/} ]] && lessons+=("${dir%/}")
 done
-lesson=03_shadow_map_basic
+lesson=01_projected_planar
 named=0
 if [[ $# -gt 0 && $1 != -* ]]; then
   named=1
@@ -30,7 +30,7 @@ if [[ -n ${DISPLAY:-} ]]; then
   exec "build/$lesson" "$@"
 fi
 mkdir -p out
-# Nothing asked for: every lesson. A lesson or flags asked for: that lesson (default 03).
+# Nothing asked for: every lesson. A lesson or flags asked for: that lesson (default 01).
 if ((named == 0 && $# == 0)); then
   echo "run.sh: no display, rendering every lesson headless into out/"
   selected=("${lessons[@]}")

@@ -97,8 +97,8 @@ void compareCounters(const Json& ref, const Json& own, const Json& unavailable,
   }
 }
 
-// The README's flavour table ("One source, three APIs"): the counters each flavour must report
-// as unavailable, by lesson ("" for every lesson). Exactly these, so that a counter nulled
+// The flavour table of docs/PLATFORMS.md ("One source, three APIs"): the counters each flavour must
+// report as unavailable, by lesson ("" for every lesson). Exactly these, so that a counter nulled
 // where the table says it is counted fails, as does one counted where the table says it cannot
 // be. fragment_invocations on a desktop flavour depends on ARB_pipeline_statistics_query
 // (Mesa has it, macOS not): allowed either way there.
@@ -135,18 +135,19 @@ void checkFlavourTable(const std::string& lesson, const Json& own) {
   }
   for (const std::string& name : expected) {
     if (!said.count(name))
-      fail("counters: " + name + " counted, but the README's table says " + flavour + " cannot");
+      fail("counters: " + name + " counted, but docs/PLATFORMS.md's table says " + flavour +
+           " cannot");
   }
   for (const std::string& name : said) {
     const bool optional = flavour != "gles30" && name == "fragment_invocations";
     if (!expected.count(name) && !optional) {
-      fail("counters: " + name + " unavailable, but the README's table says " + flavour +
+      fail("counters: " + name + " unavailable, but docs/PLATFORMS.md's table says " + flavour +
            " counts it");
     }
   }
 }
 
-// The read-back the README's table describes, on a frame that renders the map (06, 07):
+// The read-back the flavour table describes, on a frame that renders the map (06, 07):
 // through the CPU, gl45 and gl41 read the depth itself (1 byte a texel for 06's 8 bits, 2 for
 // 07's 16) while OpenGL ES, which reads colour as RGBA only, first writes the digits into
 // colour in a pass of its own (06's linear encoding has them in colour already) and reads 4
