@@ -30,7 +30,9 @@ class ShadowMapBasic final : public Lesson {
   }
 
   void declare(Params& p) override {
-    map_.declare(p);  // shadow.size/height/format/filter/fit/cache, inset
+    map_.declare(p);     // shadow.size/height/format/filter/fit/cache, inset
+    p.claim("shadow.");  // the map is this lesson's idea: its sliders come first on the panel
+    p.claim("inset");
     dimming_ = p.addFloat("dimming", 0.4f, 0.0f, 1.0f,
                           "light left in shadow: dimming + (1-dimming)*shade");
   }

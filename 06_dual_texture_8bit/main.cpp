@@ -31,6 +31,9 @@ class DualTexture8bit final : public Lesson {
 
   void declare(Params& p) override {
     map_.declare(p, /*linearChoice=*/true);
+    // The read-back and its bias in map steps are this lesson's idea: first on the panel.
+    p.claim("map.");
+    p.claim("bias.");
     ramp_lookup_ = p.addBool("ramp.lookup", true,
                              "Tex1 from the 8-bit ramp texture; off: the exact fragment depth");
     dimmed_ = p.addBool("pass.dimmed", true, "pass 1: everything dimmed");

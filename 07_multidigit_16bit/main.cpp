@@ -30,6 +30,9 @@ class MultiDigit16bit final : public Lesson {
 
   void declare(Params& p) override {
     map_.declare(p, /*linearChoice=*/false);
+    // The read-back and its bias in map steps are this lesson's idea: first on the panel.
+    p.claim("map.");
+    p.claim("bias.");
     dimmed_ = p.addBool("pass.dimmed", true, "pass 1: everything dimmed");
     big_ =
         p.addBool("pass.big", true, "pass 2: lit where the big digits decide (writes stencil 1)");

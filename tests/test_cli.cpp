@@ -177,13 +177,14 @@ TEST_F(Cli, TheDocumentedDefaultsOfTheCommandLineAreWhatARunDoes) {
   const std::string help = run(kLesson, "--help").output;
   std::ifstream contracts_in(std::string(SHADOWS_SOURCE_DIR) + "/docs/CONTRACTS.md");
   const std::string contracts{std::istreambuf_iterator<char>(contracts_in), {}};
-  const std::string help_size = captured(help, R"(--size WxH\s+image size \(default (\d+x\d+)\))");
+  const std::string help_size =
+      captured(help, R"(--size WxH\s+image size \(default (\d+x\d+)[;)])");
   const std::string help_frames =
       captured(help, R"(--frames N\s+timed frames[^(]*\(default (\d+))");
   const std::string help_device = captured(help, R"(--device N[^(]*\(default (\d+))");
   const std::string help_backend =
       captured(help, R"(--backend NAME\s+headless context: (\w+) \(the default on desktop GL\))");
-  ASSERT_EQ(help_size, captured(contracts, R"(image size \(default (\d+x\d+)\))"));
+  ASSERT_EQ(help_size, captured(contracts, R"(image size \(default (\d+x\d+)[;)])"));
   ASSERT_EQ(help_frames, captured(contracts, R"(after one warm-up frame \(default (\d+)\))"));
   ASSERT_EQ(help_device, captured(contracts, R"(egl-device`, 0\.\.63 \(default (\d+)\))"));
   std::string contracts_backend =

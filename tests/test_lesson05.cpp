@@ -370,3 +370,40 @@ TEST(Lesson05, SliderExtremesStayFiniteAndErrorFree) {
 
 }  // namespace
 }  // namespace shadows
+
+namespace shadows {
+namespace {
+
+TEST(Lesson05, ThePanelShowsTheLessonsOwnSlidersFirstAndFoldsTheSharedOnes) {
+  // The lesson's idea (pcf.*) first and open; the shadow map's settings, the light and the
+  // camera, which every lesson shares, folded below it (a student once had to scroll past
+  // nine of them to find pcf.mode).
+  auto runner = startLesson(kLesson, {}, 800, 600, /*panel=*/true);
+  runner->setMouse({-1, -1}, false);
+  runner->renderFrame();
+  runner->renderFrame();
+  const auto drawn = [&](const std::string& name) {
+    const Param& p = runner->params().at(name);
+    return p.widget_max.y > p.widget_min.y;
+  };
+  for (const char* own : {"pcf.mode", "pcf.radius", "pcf.taps"}) {
+    EXPECT_TRUE(drawn(own)) << own << " is the lesson's own: open on the panel";
+    EXPECT_LT(runner->params().at(own).widget_max.y, 600.0f) << own << ": seen without scrolling";
+  }
+  for (const char* shared : {"shadow.size", "shadow.filter", "light.fov", "camera.fov"}) {
+    EXPECT_TRUE(runner->params().at(shared).shared) << shared;
+    EXPECT_FALSE(drawn(shared)) << shared << " is shared: folded";
+  }
+  EXPECT_FALSE(runner->params().at("pcf.mode").shared);
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
+TEST(Lesson05, AMapLessonClaimsTheMapsSettingsAsItsOwn) {
+  // 03's idea is the map itself: its settings are its own sliders there, shared here.
+  auto three = startLesson("03_shadow_map_basic", {}, 320, 240);
+  EXPECT_FALSE(three->params().at("shadow.size").shared);
+  EXPECT_TRUE(three->params().at("light.fov").shared);
+}
+
+}  // namespace
+}  // namespace shadows

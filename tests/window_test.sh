@@ -33,12 +33,25 @@ echo "window outputs ok"
 # --hide-panel: the same window without the panel, so it costs what headless costs.
 xvfb-run -a -s "-screen 0 1024x768x24" "$first" --window --size 320x240 --frames 1 \
   --hide-panel --out "$out/hidden.png" --report "$out/hidden.json"
-# The same window with the panel (w.png above) differs from it only where the panel was.
-if cmp -s "$out/w.png" "$out/hidden.png"; then
-  echo "--hide-panel: the picture is the same as with the panel"
-  exit 1
-fi
-echo "hidden panel ok"
+# The panel is a column right of the picture, never over it: the window with the panel (w.png
+# above) is the 320x240 picture plus the column, its picture byte for byte the hidden-panel
+# one, and the column holds the panel (many colours, not a blank strip).
+python3 - "$out/w.png" "$out/hidden.png" "$(dirname "$0")" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[3])
+from png_read import read_png
+w, h, shown = read_png(sys.argv[1])
+fw, fh, hidden = read_png(sys.argv[2])
+if (fw, fh) != (320, 240) or h != 240 or w <= fw:
+    sys.exit(f"window sizes: {w}x{h} with the panel, {fw}x{fh} without: no column beside 320x240")
+covered = sum(shown[y][:4 * fw] != hidden[y] for y in range(h))
+if covered:
+    sys.exit(f"the panel covers the picture: {covered} of its rows differ from the hidden-panel run")
+colours = {shown[y][4 * x:4 * x + 3] for y in range(h) for x in range(fw, w)}
+if len(colours) < 10:
+    sys.exit(f"the panel's column shows {len(colours)} colours: no panel drawn there")
+PY
+echo "hidden panel ok, the panel beside the picture"
 # Past its first frames the panel is laid from its cached texture, not drawn anew: still
 # there at frame 12 (a picture unlike the hidden-panel one, and not blank).
 xvfb-run -a -s "-screen 0 1024x768x24" "$first" --window --size 320x240 --frames 12 \
@@ -50,6 +63,17 @@ if cmp -s "$out/cached.png" "$out/cached_hidden.png"; then
   exit 1
 fi
 echo "cached panel ok"
+# Without --size a window is 1280x720: a 940x720 picture and the column.
+xvfb-run -a -s "-screen 0 1400x900x24" "$first" --window --frames 1 --out "$out/default.png"
+python3 - "$out/default.png" "$(dirname "$0")" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[2])
+from png_read import read_png
+w, h, _ = read_png(sys.argv[1])
+if (w, h) != (1280, 720):
+    sys.exit(f"the default window is {w}x{h}, not 1280x720")
+PY
+echo "default window ok"
 # Outputs without --out, or --frames alone, are honoured too: the run stops after its frames
 # (a timeout turns "ignored, the window stays open" into a failure) and writes what was asked.
 timeout 120 xvfb-run -a -s "-screen 0 1024x768x24" "$first" --window --size 320x240 --frames 2 \

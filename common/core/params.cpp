@@ -170,9 +170,16 @@ Param& Params::add(Param p) {
   if (find(p.name) != nullptr) throw std::logic_error("parameter declared twice: " + p.name);
   std::copy(std::begin(p.value), std::end(p.value), std::begin(p.fallback));
   p.string_fallback = p.string_value;
+  p.shared = p.shared || sharing_;
   params_.push_back(std::move(p));
   dirty_ |= params_.back().affects;
   return params_.back();
+}
+
+void Params::claim(const std::string& prefix) {
+  for (Param& p : params_) {
+    if (p.name.rfind(prefix, 0) == 0) p.shared = false;
+  }
 }
 
 Param& Params::addFloat(const std::string& name, float def, float min, float max,

@@ -41,6 +41,10 @@ struct Param {
   std::vector<std::string> choices;
   std::string string_value, string_fallback;  // String kind (e.g. a file path)
   std::uint32_t affects = kDirtyView;
+  // Declared by a technique several lessons share (common/shadow: the map's size, format,
+  // filter, ...), not by the lesson's own main.cpp: the panel folds these below the lesson's
+  // own sliders, unless the lesson claims them as its idea (Params::claim).
+  bool shared = false;
   // Optional extra check of a value that already parsed (say, a file that must load):
   // returns "" or what is wrong, and set() then refuses the value with that message.
   std::function<std::string(const std::string&)> check;
@@ -143,6 +147,22 @@ class Params {
 
   // Adds a parameter declared elsewhere (the runner's shared ones), default included.
   Param& add(Param p);
+  // While one lives, what is declared is marked shared (Param::shared): the shared
+  // techniques' constructors hold one.
+  class SharedScope {
+   public:
+    explicit SharedScope(Params& p) : params_(p), was_(p.sharing_) { p.sharing_ = true; }
+    ~SharedScope() { params_.sharing_ = was_; }
+    SharedScope(const SharedScope&) = delete;
+    SharedScope& operator=(const SharedScope&) = delete;
+
+   private:
+    Params& params_;
+    bool was_;
+  };
+  // A lesson whose idea is a shared technique's settings (03: the shadow map itself) claims
+  // them: the parameters whose names start with `prefix` are its own on the panel.
+  void claim(const std::string& prefix);
   Param* find(const std::string& name);
   const Param* find(const std::string& name) const;
   Param& at(const std::string& name);  // throws std::out_of_range naming the parameter
@@ -188,6 +208,7 @@ class Params {
   // String widgets: the text being typed (applied on Enter) and the last refusal.
   std::map<std::string, std::string> editing_, refused_;
   std::uint32_t dirty_ = kDirtyAll;
+  bool sharing_ = false;  // a SharedScope is open
 };
 
 // Handles check their parameter's kind once, when the lesson takes them (a wrong kind is a

@@ -6,6 +6,7 @@
 
 #include "core/json.hpp"
 #include "gl/context.hpp"
+#include "math/texel_density.hpp"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -32,6 +33,11 @@ std::string Runner::costSummary() const {
   std::snprintf(line, sizeof line, "frame %.2f ms (median of %zu)", measure_->medianFrameMs(),
                 frames);
   std::string summary = line;
+#ifdef __EMSCRIPTEN__
+  // WebGL returns from glFinish before the GPU process has drawn: a ratio of two such times
+  // is noise, so a page gives none (the native lesson measures it).
+  summary += "\nshadow's cost: this browser cannot time the frame (run the lesson natively)";
+#endif
   if (const double overhead = shadowOverhead(); overhead > 0.0) {
     std::snprintf(line, sizeof line, "\nshadow: %.2fx the frame without it (%.2f ms)", overhead,
                   baseline_.measure->medianFrameMs());
@@ -123,7 +129,9 @@ void Runner::drawPanelTexture(int width, int height) {
 void Runner::laySavedPanel(const Frame& frame) {
   const Gpu& g = *gpu_;
   if (g.panel_box.z == 0) return;
-  frame.bindTarget();
+  // Over the whole framebuffer, the panel's column beside the picture included.
+  glBindFramebuffer(GL_FRAMEBUFFER, frame.target);
+  glViewport(0, 0, g.panel_color.width(), g.panel_color.height());
   glEnable(GL_SCISSOR_TEST);
   glScissor(g.panel_box.x, g.panel_box.y, g.panel_box.z, g.panel_box.w);
   glDisable(GL_DEPTH_TEST);
@@ -139,15 +147,64 @@ void Runner::laySavedPanel(const Frame& frame) {
   glEnable(GL_DEPTH_TEST);
 }
 
+void Runner::drawTexelLegend() const {
+  // The aliasing view's colours (common/shaders/texel_density.frag's TEXEL_HEATMAP, mirrored
+  // here) along texels per pixel on the least sampled axis, 1/8 to 8 on a log scale.
+  const auto colour = [](float e) {  // e = log2(texels per pixel)
+    const float t = std::clamp(std::abs(e) / 3.0f, 0.0f, 1.0f);
+    const glm::vec3 c =
+        std::abs(std::exp2(e) - 1.0f) <= kTexelTolerance ? glm::vec3(0.15f, 0.8f, 0.25f)
+        : e < 0.0f ? glm::mix(glm::vec3(1.0f, 0.85f, 0.8f), glm::vec3(0.85f, 0.05f, 0.05f), t)
+                   : glm::mix(glm::vec3(0.8f, 0.85f, 1.0f), glm::vec3(0.05f, 0.2f, 0.9f), t);
+    return ImGui::GetColorU32(ImVec4(c.r, c.g, c.b, 1.0f));
+  };
+  ImGui::TextWrapped("the aliasing view: texels per pixel, least axis (grey: not counted)");
+  const float width = ImGui::GetContentRegionAvail().x, height = ImGui::GetFontSize();
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  constexpr int kSteps = 60;
+  for (int i = 0; i < kSteps; ++i) {
+    const float e = -3.0f + 6.0f * (static_cast<float>(i) + 0.5f) / kSteps;
+    const float x0 = at.x + width * static_cast<float>(i) / kSteps;
+    draw->AddRectFilled(ImVec2(x0, at.y), ImVec2(x0 + width / kSteps + 1.0f, at.y + height),
+                        colour(e));
+  }
+  // One texel per pixel (green) is a hair's width on this scale: a tick marks it.
+  const float one = at.x + 0.5f * width;
+  draw->AddRectFilled(ImVec2(one - 1.5f, at.y - 2.0f), ImVec2(one + 1.5f, at.y + height + 2.0f),
+                      colour(0.0f));
+  ImGui::Dummy(ImVec2(width, height + 2.0f));
+  // The scale's ends and middle under the bar, then what the colours mean.
+  const float x0 = ImGui::GetCursorPosX();
+  ImGui::TextUnformatted("1/8");
+  ImGui::SameLine(x0 + 0.5f * width - 0.5f * ImGui::CalcTextSize("1").x);
+  ImGui::TextUnformatted("1");
+  ImGui::SameLine(x0 + width - ImGui::CalcTextSize("8").x);
+  ImGui::TextUnformatted("8");
+  ImGui::TextWrapped("red: under-sampled (blocky), green: one texel a pixel, blue: over");
+}
+
 void Runner::drawPanel(Frame& frame) {
-  // Narrow, in the top-left corner, in sections that fold away; folded whole on small
-  // pictures, where it would hide everything.
-  const float width = std::min(300.0f, 0.45f * static_cast<float>(frame.width));
-  ImGui::SetNextWindowPos(ImVec2(6, 6), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(width, static_cast<float>(frame.height) - 12),
-                           ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowCollapsed(frame.width < 600, ImGuiCond_FirstUseEver);
-  ImGui::Begin(name_.c_str());
+  const bool column = window_.column > 0;
+  if (column) {
+    // A window's panel is a column of its own right of the picture, never over it.
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x - kPanelColumn, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(kPanelColumn, display.y), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(1.0f);
+  } else {
+    // Over the picture (headless --panel, a window too narrow for a column): narrow, in the
+    // top-left corner, folded whole on small pictures, where it would hide everything.
+    const float width = std::min(300.0f, 0.45f * static_cast<float>(frame.width));
+    ImGui::SetNextWindowPos(ImVec2(6, 6), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(width, static_cast<float>(frame.height) - 12),
+                             ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowCollapsed(frame.width < 600, ImGuiCond_FirstUseEver);
+  }
+  ImGui::Begin(
+      name_.c_str(), nullptr,
+      column ? ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse
+             : 0);
   ImGui::PushItemWidth(-ImGui::GetFontSize() * 8.5f);  // room for the longest labels
   ImGui::TextWrapped("%s", lesson_->title().c_str());
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
@@ -215,24 +272,33 @@ void Runner::drawPanel(Frame& frame) {
                        texels_.stats->min_axis.median, texels_.stats->undersampled_pct,
                        texels_.key == errorKey() ? "" : " (stale)");
   }
+  if (params_.at("view").choice() == "aliasing") drawTexelLegend();
   if (const double overhead = shadowOverhead(); overhead > 0.0) {
     ImGui::Text("cost: %.2fx the frame without shadow", overhead);
   }
   params_.drawWidgets([](const Param& p) { return p.name == "view" || p.name == "scene"; });
   if (ImGui::Button("Screenshot (F12)")) window_.screenshot_requested = true;
 
-  const auto shared = [](const Param& p) {
-    return p.name == "view" || p.name == "scene" || p.name.rfind("light.", 0) == 0 ||
-           p.name.rfind("camera.", 0) == 0;
+  // The lesson's own idea first and open; what every lesson shares folded below it.
+  const auto top = [](const Param& p) { return p.name == "view" || p.name == "scene"; };
+  const auto lightOrCamera = [](const Param& p) {
+    return p.name.rfind("light.", 0) == 0 || p.name.rfind("camera.", 0) == 0;
   };
-  if (ImGui::CollapsingHeader("Technique", ImGuiTreeNodeFlags_DefaultOpen)) {
-    params_.drawWidgets([&](const Param& p) { return !shared(p); });
+  const auto section = [&](const char* title, bool open) {
+    if (window_.open_sections.count(title) != 0) ImGui::SetNextItemOpen(true);
+    return ImGui::CollapsingHeader(title, open ? ImGuiTreeNodeFlags_DefaultOpen : 0);
+  };
+  if (section("Technique", true)) {
+    params_.drawWidgets([&](const Param& p) { return !p.shared && !top(p); });
     lesson_->panel(frame);
   }
-  if (ImGui::CollapsingHeader("Light and camera", ImGuiTreeNodeFlags_DefaultOpen)) {
-    params_.drawWidgets([](const Param& p) {
-      return p.name.rfind("light.", 0) == 0 || p.name.rfind("camera.", 0) == 0;
-    });
+  const auto mapSetting = [&](const Param& p) { return p.shared && !top(p) && !lightOrCamera(p); };
+  const auto& all = params_.all();
+  if (std::any_of(all.begin(), all.end(), mapSetting) && section("Shadow map", false)) {
+    params_.drawWidgets(mapSetting);
+  }
+  if (section("Light and camera", false)) {
+    params_.drawWidgets([&](const Param& p) { return p.shared && lightOrCamera(p); });
   }
   if (ImGui::CollapsingHeader("Cost", ImGuiTreeNodeFlags_DefaultOpen)) {
     ImGui::TextWrapped("%s", costSummary().c_str());

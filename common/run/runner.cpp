@@ -83,6 +83,7 @@ void Runner::declareShared() {
   // misleads), and --set rejects them.
   Params all;
   declareSharedInto(all);
+  const Params::SharedScope shared(params_);  // the light and camera: every lesson's
   const auto unused = lesson_->unusedSharedParams();
   for (const Param& p : all.all()) {
     if (std::find(unused.begin(), unused.end(), p.name) == unused.end()) params_.add(p);
@@ -328,8 +329,11 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
   // In a window the panel is drawn anew only when it may have changed (input, or every
   // quarter second for its numbers) and laid over the other frames from a texture: ImGui's
   // thousands of blended triangles cost a CPU rasterizer as much as some lessons' shadows.
+  // A window's panel is drawn over its whole framebuffer (a column right of the picture).
+  const glm::ivec2 panel_size =
+      window_.open && window_.framebuffer.x > 0 ? window_.framebuffer : glm::ivec2(width, height);
   const bool draw_panel =
-      withPanel && (!window_.open || (!baseline_.running && panelDue(width, height)));
+      withPanel && (!window_.open || (!baseline_.running && panelDue(panel_size.x, panel_size.y)));
   if (draw_panel) {
     ImGuiIO& io = ImGui::GetIO();
     if (!window_.open) {
@@ -388,7 +392,7 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
     frame.bindTarget();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   } else if (withPanel) {
-    if (draw_panel) drawPanelTexture(width, height);
+    if (draw_panel) drawPanelTexture(panel_size.x, panel_size.y);
     laySavedPanel(frame);
   }
   measure_->endFrame();

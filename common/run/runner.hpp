@@ -6,6 +6,7 @@
 #include <future>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,12 @@ class Runner final : public LessonHost {
   void requestScreenshot() { window_.screenshot_requested = true; }
   // Why the truth and error views show no picture ("" when the build has the truth).
   static std::string truthUnavailable();
+  // The panel's width as a column beside the picture, in window units (a window is the frame
+  // plus this wide while the panel shows).
+  static constexpr float kPanelColumn = 340.0f;
+  // Keeps one of the panel's folded sections open ("Light and camera"): a test or a
+  // tutorial script aims at a widget there.
+  void openPanelSection(const std::string& title) { window_.open_sections.insert(title); }
   // Feeds ImGui a mouse state for the next frame (headless tests drive the panel this way).
   void setMouse(glm::vec2 position, bool leftDown);
   // Whether input is moving (the window sets it each frame; tests may too): Frame::input_moving.
@@ -132,6 +139,8 @@ class Runner final : public LessonHost {
   // windowFrame() says true, then close, which returns the exit code.
   bool openWindow();
   bool windowFrame();
+  // Resizes the window (a page's canvas, to fill the browser's window): picture and column.
+  void fitWindow(int width, int height);
   int closeWindow();
 
   // LessonHost: what a lesson may ask (lesson/lesson.hpp says what each does).
@@ -147,6 +156,8 @@ class Runner final : public LessonHost {
                  bool fullscreen) const override;
   void drawImageInset(const Frame& frame, const Texture& image, bool fullscreen) const override;
   void drawFullscreen(const Frame& frame, const Program& program, bool inset) const override;
+  // The aliasing view's colour bar, in the panel while that view shows (panel.cpp).
+  void drawTexelLegend() const;
   // The window's panel cache (panel.cpp).
   bool panelDue(int width, int height);
   void drawPanelTexture(int width, int height);
@@ -231,7 +242,14 @@ class Runner final : public LessonHost {
     int screenshots_taken = 0;
     glm::vec2 mouse{-1.0f};  // setMouse: a headless test's mouse
     bool mouse_down = false;
+    // The panel's column right of the picture, in framebuffer pixels (0: over the picture, or
+    // hidden), and the whole framebuffer the panel is drawn into.
+    int column = 0;
+    glm::ivec2 framebuffer{0};
+    std::set<std::string> open_sections;  // openPanelSection
   } window_;
+  // The window's frame: the framebuffer less the panel's column where it fits one.
+  int columnFor(int framebufferWidth) const;
 };
 
 // main() of every lesson binary: parse, run, exit code (0 ok, 1 runtime failure, 2 bad input).

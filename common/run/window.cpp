@@ -49,8 +49,17 @@ bool Runner::openWindow() {
   }
   window_.open = true;
   setGlfwContextHints();
-  GLFWwindow* window = glfwCreateWindow(
-      options_.width, options_.height, (name_ + ": " + lesson_->title()).c_str(), nullptr, nullptr);
+  // --size is the picture; the panel's column comes beside it. Without --size a window is
+  // 1280x720 (a laptop's screen, less the desktop's bars), larger than a headless picture.
+  int width = options_.width, height = options_.height;
+#ifndef __EMSCRIPTEN__  // a page fits its window (page_main.cpp)
+  if (!options_.size_given) {
+    width = 1280 - static_cast<int>(kPanelColumn), height = 720;
+  }
+#endif
+  if (!options_.hide_panel) width += static_cast<int>(kPanelColumn);
+  GLFWwindow* window =
+      glfwCreateWindow(width, height, (name_ + ": " + lesson_->title()).c_str(), nullptr, nullptr);
   if (window == nullptr) {
     if (window_.error.empty()) window_.error = std::string("no ") + (contextName() + 2);
     glfwTerminate();
@@ -160,8 +169,11 @@ bool Runner::windowFrame() {
     if (h_down && !h_was_down && !io.WantTextInput) options_.hide_panel = !options_.hide_panel;
     h_was_down = h_down;
 
-    int w = 0, h = 0;
-    glfwGetFramebufferSize(window, &w, &h);
+    int window_w = 0, h = 0;
+    glfwGetFramebufferSize(window, &window_w, &h);
+    window_.column = columnFor(window_w);
+    window_.framebuffer = {window_w, h};
+    const int w = window_w - window_.column;  // the picture, left of the panel's column
     if (w > 0 && h > 0) {
       options_.width = w, options_.height = h;
       gpu_->ensureTargets(w, h);
@@ -189,19 +201,22 @@ bool Runner::windowFrame() {
       renderInto(0, w, h, params_.at("view").choice(), true, !options_.hide_panel);
       // After the frame, so the panel's numbers (drawn first thing in a frame) are the
       // lesson's, not the baseline's.
+#ifndef __EMSCRIPTEN__  // a page cannot time it (costSummary)
       if (!options_.hide_panel && frame_number++ % 32 == 0) renderBaselineFrame();
+#endif
       GlErrorLog::poll();
       if (window_.screenshot_requested) {
         window_.screenshot_requested = false;
-        saveScreenshot(w, h, {});
+        saveScreenshot(window_w, h, {});
       }
       if (frames_left > 0 && --frames_left == 0) {
-        // The same outputs as a headless run: the picture, and the report, truth and error
-        // pictures asked for, all or none.
-        Image image{w, h, std::vector<std::uint8_t>(static_cast<size_t>(w) * h * 4)};
+        // The same outputs as a headless run: the window as shown (the picture, and the
+        // panel's column beside it), and the report, truth and error pictures asked for, all
+        // or none.
+        Image image{window_w, h, std::vector<std::uint8_t>(static_cast<size_t>(window_w) * h * 4)};
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+        glReadPixels(0, 0, window_w, h, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
         if (options_.truthAsked()) measureError();
         outputs_failed = !writeOutputs(options_.out, image);
       }
@@ -209,6 +224,25 @@ bool Runner::windowFrame() {
     glfwSwapBuffers(window);
   }
   return true;
+}
+
+int Runner::columnFor(int framebufferWidth) const {
+  if (options_.hide_panel || gpu_ == nullptr || gpu_->window == nullptr) return 0;
+  int window_width = 0, unused = 0;
+  glfwGetWindowSize(gpu_->window, &window_width, &unused);
+  const float scale = window_width > 0
+                          ? static_cast<float>(framebufferWidth) / static_cast<float>(window_width)
+                          : 1.0f;
+  const int column = static_cast<int>(kPanelColumn * scale);
+  // A window too narrow for a column and a picture of some use gets the panel over it.
+  return framebufferWidth - column >= static_cast<int>(200 * scale) ? column : 0;
+}
+
+void Runner::fitWindow(int width, int height) {
+  if (gpu_ == nullptr || gpu_->window == nullptr || width <= 0 || height <= 0) return;
+  int w = 0, h = 0;
+  glfwGetWindowSize(gpu_->window, &w, &h);
+  if (w != width || h != height) glfwSetWindowSize(gpu_->window, width, height);
 }
 
 int Runner::closeWindow() {

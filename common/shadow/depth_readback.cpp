@@ -12,6 +12,7 @@
 namespace shadows {
 
 void DepthReadback::declare(Params& p, bool linearChoice) {
+  const Params::SharedScope shared(p);
   const int digits = digits_;
   light_.declareSize(p);
   light_.declareFit(p);

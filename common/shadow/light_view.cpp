@@ -7,6 +7,7 @@
 namespace shadows {
 
 void LightView::declareSize(Params& p) {
+  const Params::SharedScope shared(p);
   constexpr auto kMap = kDirtyShadowMap | kDirtyResources;
   size_param_ =
       p.addInt("shadow.size", 1024, 64, 4096, "shadow map width in texels", kMap).logScale();
@@ -21,6 +22,7 @@ void LightView::declareSize(Params& p) {
 }
 
 void LightView::declareFit(Params& p) {
+  const Params::SharedScope shared(p);
   fit_ = p.addBool("shadow.fit", false, "fit the light's near/far to the casters' bounds",
                    kDirtyShadowMap);
   cache_ = p.addBool("shadow.cache", true,

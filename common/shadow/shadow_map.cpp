@@ -3,6 +3,7 @@
 namespace shadows {
 
 void ShadowMap::declare(Params& p) {
+  const Params::SharedScope shared(p);
   light_.declareSize(p);
   format_ = p.addChoice("shadow.format", {"16", "24", "32f"}, "24", "depth bits of the map",
                         kDirtyShadowMap | kDirtyResources);
