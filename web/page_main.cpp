@@ -3,7 +3,9 @@
 // parser reads; bad input is shown on the page as the same one line, and the lesson then runs
 // with its defaults. The window loop (window.cpp) runs one frame per browser frame.
 #include <emscripten.h>
+#include <emscripten/html5.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -74,8 +76,26 @@ void publish() {
       error.c_str());
 }
 
+// Without ?size= the canvas fills the page's stage (the browser's window less the header and
+// the lines under it), picture and panel column, and follows it when the window is resized.
+void fitCanvas() {
+  if (g_runner->options().size_given) return;
+  double width = 0, height = 0;
+  if (emscripten_get_element_css_size("#stage", &width, &height) != EMSCRIPTEN_RESULT_SUCCESS) {
+    return;
+  }
+  // The shell's largestSide() (`!=`: clang-format splits a triple equals sign in C++ text).
+  const int largest =
+      EM_ASM_INT({ return typeof largest != 'undefined' && largest > 0 ? largest : 4096; });
+  const auto fit = [&](double css, int least) {
+    return std::clamp(static_cast<int>(css), least, std::max(least, largest));
+  };
+  g_runner->fitWindow(fit(width, 480), fit(height, 240));
+}
+
 void frame() {
   try {
+    fitCanvas();
     const bool more = g_runner->windowFrame();
     ++g_frames;
     publish();

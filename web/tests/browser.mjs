@@ -60,7 +60,8 @@ export async function launch(extraFlags = []) {
 }
 
 // A tab at `url`: events collected (exceptions, console), evaluate(), waitFor().
-export async function open(browser, url) {
+// viewport: {width, height} of the page's window (CSS pixels), else the browser's own.
+export async function open(browser, url, viewport = null) {
   const { targetId } = await browser.send('Target.createTarget', { url: 'about:blank' });
   const { sessionId } = await browser.send('Target.attachToTarget', { targetId, flatten: true });
   const page = {
@@ -98,6 +99,10 @@ export async function open(browser, url) {
   await page.send('Runtime.enable');
   await page.send('Log.enable');
   await page.send('Page.enable');
+  if (viewport) {
+    await page.send('Emulation.setDeviceMetricsOverride',
+                    { width: viewport.width, height: viewport.height, deviceScaleFactor: 1, mobile: false });
+  }
   await page.send('Page.navigate', { url });
   return page;
 }

@@ -165,33 +165,48 @@ try {
     }
   }
 
-  // The page as a student opens it: panel and all, at the command line's default size.
+  // The page as a student opens it: panel and all, the canvas filling a laptop-sized window
+  // (1024x700: the picture about 680x600 beside the panel's 340-pixel column).
   {
-    const page = await open(browser, `${server.url}${lesson}.html`);
+    const page = await open(browser, `${server.url}${lesson}.html`, { width: 1024, height: 700 });
     // 08's slices cost SwiftShader about a second a frame at this size.
     await page.waitFor('shadowsPage.frames >= 5 || shadowsPage.errors.length > 0', 60000);
     const before = await screenshot(page, `${lesson}.page.png`);
-    // The orbit camera: a drag across the canvas, right of the panel, turns the view.
-    const box = await page.evaluate(`(() => { const r = document.getElementById('canvas').getBoundingClientRect(); return {x: r.x, y: r.y, w: r.width, h: r.height}; })()`);
+    const canvasBox = `(() => { const r = document.getElementById('canvas').getBoundingClientRect(); return {x: r.x, y: r.y, w: r.width, h: r.height, page: document.documentElement.clientWidth}; })()`;
+    const box = await page.evaluate(canvasBox);
+    // The canvas fills the window's width, the picture left of the panel's column.
+    if (Math.abs(box.w - box.page) > 1 || box.h < 500) fail(`the canvas is ${box.w}x${box.h} in a ${box.page}-wide window: it does not fill it`);
+    if (before.width !== Math.round(box.w)) fail(`the screenshot is ${before.width} wide, the canvas ${box.w}`);
+    // The orbit camera: a drag across the picture, left of the panel's column, turns the view.
     const at = (fx, fy) => ({ x: box.x + fx * box.w, y: box.y + fy * box.h });
-    await page.send('Input.dispatchMouseEvent', { type: 'mouseMoved', ...at(0.6, 0.5) });
-    await page.send('Input.dispatchMouseEvent', { type: 'mousePressed', button: 'left', buttons: 1, clickCount: 1, ...at(0.6, 0.5) });
+    await page.send('Input.dispatchMouseEvent', { type: 'mouseMoved', ...at(0.2, 0.5) });
+    await page.send('Input.dispatchMouseEvent', { type: 'mousePressed', button: 'left', buttons: 1, clickCount: 1, ...at(0.2, 0.5) });
     for (let i = 1; i <= 5; ++i) {
-      await page.send('Input.dispatchMouseEvent', { type: 'mouseMoved', button: 'left', buttons: 1, ...at(0.6 + 0.04 * i, 0.5) });
+      await page.send('Input.dispatchMouseEvent', { type: 'mouseMoved', button: 'left', buttons: 1, ...at(0.2 + 0.04 * i, 0.5) });
       const frames = await page.evaluate('shadowsPage.frames');
       await page.waitFor(`shadowsPage.frames > ${frames}`, 60000);
     }
-    await page.send('Input.dispatchMouseEvent', { type: 'mouseReleased', button: 'left', buttons: 0, clickCount: 1, ...at(0.8, 0.5) });
+    await page.send('Input.dispatchMouseEvent', { type: 'mouseReleased', button: 'left', buttons: 0, clickCount: 1, ...at(0.4, 0.5) });
     const after = await screenshot(page, `${lesson}.page.orbited.png`);
     const turned = pixelsDiffering(before, after, 8);
+    if (lesson === kShellLesson) {
+      // Resizing the window resizes the canvas: the lesson follows the page's stage.
+      await page.send('Emulation.setDeviceMetricsOverride', { width: 1200, height: 800, deviceScaleFactor: 1, mobile: false });
+      await page.waitFor(`document.getElementById('canvas').getBoundingClientRect().width >= document.documentElement.clientWidth - 1 &&
+                          document.documentElement.clientWidth > 1100`, 30000)
+          .catch(() => fail('the canvas did not follow the window from 1024 to 1200 wide'));
+      const frames = await page.evaluate('shadowsPage.frames');
+      await page.waitFor(`shadowsPage.frames > ${frames + 2}`, 60000);
+    }
     console.log(`${lesson} orbit: a drag moved ${turned} pixels by more than 8 levels`);
     if (turned < 0.05 * before.width * before.height) fail(`a drag on the canvas did not orbit the camera (${turned} pixels moved)`);
     await checkClean(page, 'page with panel');
     // At rest (after the drag too), the worker traces the truth: its error numbers come under
     // the canvas once it is done.
-    await page.waitFor(`/error against the ray-traced truth/.test(document.getElementById('status').textContent) ||
-                        shadowsPage.errors.length > 0`, 240000);
-    const status = await page.evaluate(`document.getElementById('status').textContent`);
+    // Read in the same evaluation that saw the numbers: a truth traced anew (the resize above)
+    // replaces them with its progress line.
+    const status = await page.waitFor(`(() => { const t = document.getElementById('status').textContent;
+                                                return /error against the ray-traced truth/.test(t) || shadowsPage.errors.length > 0 ? t : false; })()`, 240000);
     if (!/shown every [0-9.]+ ms/.test(status) || !/frame [0-9.]+ ms/.test(status)) fail(`page with panel: no frame time on the page ("${status}")`);
     // Numbers, or (a drag that leaves no lit surface in view) the reason there are none.
     if (!/error against the ray-traced truth: (false shadow [0-9.]+ %, false lit [0-9.]+ %|none counted \(.+\))/.test(status)) {
