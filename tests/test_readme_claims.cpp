@@ -1,11 +1,13 @@
 // The numbers the READMEs quote, re-measured. A claim sits in the README next to the number
 // it backs, as an HTML comment on a line of its own, which a reader does not see:
-//   <!-- claim: 06_dual_texture_8bit --size 640x480 --set light.near=0.5 => /error/false_lit_pct 0.59 +- 0.1 -->
+//   <!-- claim: 06_dual_texture_8bit --size 640x480 --set light.near=0.5 => /error/false_lit_pct
+//   0.59 +- 0.1 -->
 // The test runs the lesson headless with exactly those flags (and --frames 1, which changes
 // no error or counter): nothing unstated, so the command a reader copies gives the number. It
-// reads the report field by its JSON pointer and checks it within the stated precision. Only what is deterministic can be claimed: error numbers and work
-// counters, never timings (a field ending in _ms or named *_overhead is refused). A timing
-// is claimed against the CSV it was read from instead, never re-timed:
+// reads the report field by its JSON pointer and checks it within the stated precision. Only what
+// is deterministic can be claimed: error numbers and work counters, never timings (a field ending
+// in _ms or named *_overhead is refused). A timing is claimed against the CSV it was read from
+// instead, never re-timed:
 //   <!-- csv-claim: docs/bench_precision_far.csv map=16bit_two_digits => median(frame_ms) 53.9 +-
 //   0.05 -->
 // takes the rows whose columns hold every key=value given, and compares the median of the
@@ -88,8 +90,8 @@ TEST(ReadmeClaims, EveryQuotedErrorAndCounterStillMeasuresSo) {
     ASSERT_EQ(c.pointer.find("_ms"), std::string::npos) << where << ": timings are not claims";
     ASSERT_EQ(c.pointer.find("overhead"), std::string::npos) << where;
     const std::string command = std::string(SHADOWS_BINARY_DIR) + "/" + c.lesson +
-                                " --headless --frames 1 " + c.flags +
-                                " --out /dev/null --report " + report.string() + " >/dev/null 2>&1";
+                                " --headless --frames 1 " + c.flags + " --out /dev/null --report " +
+                                report.string() + " >/dev/null 2>&1";
     auto run = runs.find(command);
     if (run == runs.end()) {
       ASSERT_EQ(std::system(command.c_str()), 0) << where;
