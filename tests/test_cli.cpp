@@ -239,8 +239,9 @@ INSTANTIATE_TEST_SUITE_P(
                       "--error-out /proc/none/e.png", "--truth-out", "--out /tmp/x.jpg",
                       "--error-out /tmp/e.bmp", "--set shadow.height=1", kLongName.c_str(),
                       "--truth-job", "--truth-result /nonexistent/t", "--truth-from",
-                      "--truth-from /nonexistent/t.trace", "--truth-from /tmp", "--exercise 1",
-                      "--grade 1", "--grade 0", "--grade x", "--exercise"));
+                      "--truth-from /nonexistent/t.trace", "--truth-from /tmp", "--exercise 9",
+                      "--grade 9", "--grade 0", "--grade x", "--exercise", "--settings",
+                      "--settings /nonexistent/s.txt", "--settings /etc/passwd"));
 
 // The EGL device platform (a GPU without a display): the report names the device, a device
 // that is not there is refused with the list of those there are, and an EGL that cannot

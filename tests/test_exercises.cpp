@@ -124,7 +124,7 @@ TEST(Exercises, WhatIsNotTheStudentsToSetIsRefusedInOneLine) {
            {"04_bias_offset", "--grade 1 --set camera.pos=0,1,2", "not camera.pos"},
            {"09_shadow_volumes", "--grade 1 --set scene=torus_pyramid", "not scene"},
            {"04_bias_offset", "--grade 7", "has exercises 1..1"},
-           {"03_shadow_map_basic", "--exercise 1", "has no exercises"},
+           {"03_shadow_map_basic", "--exercise 3", "has exercises 1..2"},
            {"04_bias_offset", "--exercise 1 --grade 2", "--grade: a second, different exercise"},
            {"04_bias_offset", "--exercise 1 --no-truth", "cannot run with --no-truth"}}) {
     const Result r = run(lesson, args + " --out /dev/null");
@@ -161,6 +161,40 @@ TEST(Exercises, TheExerciseRunsInTheLessonFromItsOwnStartingPoint) {
                                  view + " --frames 1 --out /dev/null");
     EXPECT_EQ(graded.exit_code, 0) << view << "\n" << graded.output;
   }
+}
+
+TEST(Exercises, ASettingsFileIsGradedAsItsSetsAndABadOneIsRefused) {
+  // What the panel's "Save settings" writes: comments, blank lines, one name=value a line.
+  const fs::path dir = fs::temp_directory_path() / ("shadows_settings_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return (dir / name).string();
+  };
+  const std::string good =
+      write("good.txt", "# 04_bias_offset exercise 1\n\n  bias.mode=gradient  \r\n");
+  const Result met =
+      run("04_bias_offset", "--grade 1 --settings " + good + " --frames 1 --out /dev/null");
+  EXPECT_EQ(met.exit_code, 0) << met.output;
+  EXPECT_NE(lastLine(met.output).find(": MET: "), std::string::npos) << met.output;
+  // The same file without the fix: not met.
+  const std::string unfixed = write("unfixed.txt", "bias.mode=back_faces\n");
+  EXPECT_EQ(run("04_bias_offset", "--grade 1 --settings " + unfixed + " --frames 1 --out /dev/null")
+                .exit_code,
+            1);
+  for (const auto& [file, says] : std::vector<std::pair<std::string, std::string>>{
+           {write("prose.txt", "bias.mode=gradient\nuse the gradient mode\n"),
+            "prose.txt:2: not a setting (name=value)"},
+           {write("binary.txt", std::string("\x89PNG\r\n\x1a\n", 8)),
+            "binary.txt:1: not a setting"},
+           {(dir / "missing.txt").string(), "missing.txt: cannot read it"},
+           {write("scene.txt", "scene=cubes\n"), "not scene"}}) {
+    const Result r = run("04_bias_offset", "--grade 1 --settings " + file + " --out /dev/null");
+    EXPECT_EQ(r.exit_code, 2) << file << "\n" << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_NE(r.output.find(says), std::string::npos) << r.output;
+  }
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -7,6 +7,10 @@
 
 #include <imgui.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <optional>
 
@@ -304,6 +308,51 @@ TEST(Lesson04, SliderExtremesStayFiniteAndErrorFree) {
                         "light.type=directional", "bias.factor=20"});
   }
   testing::expectFiniteAndErrorFree(kLesson, extremes);
+}
+
+}  // namespace
+}  // namespace shadows
+
+namespace shadows {
+namespace {
+
+TEST(Lesson04, AnExerciseChosenInThePanelLocksWhatItDoesNotAllowAndSavesWhatTheStudentMoved) {
+  auto runner = startLesson(kLesson, {"inset=false"}, 900, 1000, /*panel=*/true);
+  ASSERT_EQ(runner->chooseExercise(1), "");
+  EXPECT_EQ(runner->params().at("scene").choice(), "grazing") << "its own starting point";
+  runner->setMouse({-1, -1}, false);
+  runner->renderFrame();
+  runner->renderFrame();  // ImGui places the window on its second frame
+  // Press on the left end of a slider and let go: an allowed one moves, a locked one not.
+  const auto click = [&](const std::string& name) {
+    const Param& p = runner->params().at(name);
+    EXPECT_GT(p.widget_max.x, p.widget_min.x) << name << " drawn";
+    const glm::vec2 at{p.widget_min.x + 3.0f, 0.5f * (p.widget_min.y + p.widget_max.y)};
+    for (const bool down : {false, true, false}) {
+      runner->setMouse(at, down);
+      runner->renderFrame();
+    }
+    runner->setMouse({-1, -1}, false);
+    return p.f();
+  };
+  EXPECT_EQ(click("dimming"), 0.4f) << "dimming is not the exercise's: locked";
+  EXPECT_EQ(click("bias.units"), 0.0f) << "the bias is the student's to move";
+  // The submission: what the student moved and may move, nothing else.
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / ("shadows_saved_" + std::to_string(getpid()));
+  ASSERT_EQ(runner->saveSettings(file.string()), "");
+  std::ifstream in(file);
+  const std::string saved{std::istreambuf_iterator<char>(in), {}};
+  EXPECT_NE(saved.find("\nbias.units=0\n"), std::string::npos) << saved;
+  EXPECT_EQ(saved.find("scene="), std::string::npos) << saved;
+  EXPECT_NE(saved.find("--grade 1 --settings"), std::string::npos) << saved;
+  EXPECT_EQ(runner->settingsQuery(), "?exercise=1&bias.units=0");
+  std::filesystem::remove(file);
+  // None: every slider free again, the defaults back.
+  ASSERT_EQ(runner->chooseExercise(0), "");
+  EXPECT_EQ(runner->params().at("scene").choice(), "torus_pyramid");
+  EXPECT_NE(runner->chooseExercise(5), "");
+  EXPECT_EQ(runner->glErrors(), 0);
 }
 
 }  // namespace

@@ -59,13 +59,27 @@ std::string errorSummary() {
   return line;
 }
 
+// The exercise's verdict on the last truth, one line, as --grade prints it: the page's
+// grade of the settings in its address (?exercise=N&...).
+std::string exerciseSummary() {
+  const shadows::Exercise* ex = g_runner->exercise();
+  if (ex == nullptr) return "";
+  const shadows::Verdict& v = g_runner->exerciseVerdict();
+  std::string line =
+      "\nexercise " + std::to_string(g_runner->options().exercise) + " (" + ex->title + "): ";
+  if (v.figures.empty()) return line + "measuring...";
+  line += v.met ? "MET: " : "NOT MET: ";
+  for (size_t i = 0; i < v.figures.size(); ++i) line += (i ? "; " : "") + v.figures[i].line();
+  return line;
+}
+
 // Frame count, GL errors and truths measured every frame (the tests wait on them), the panel's
 // cost lines four times a second or so.
 void publish() {
   const bool text = g_frames % 15 == 1;
   const std::string cost = text ? g_runner->costSummary() : std::string();
   const std::string counters = text ? g_runner->counterSummary() : std::string();
-  const std::string error = text ? errorSummary() : std::string();
+  const std::string error = text ? errorSummary() + exerciseSummary() : std::string();
   EM_ASM(
       {
         shadowsPage.frame($0, $1, $2, $3 ? UTF8ToString($4) : null, UTF8ToString($5),
@@ -80,6 +94,11 @@ void publish() {
 // the lines under it), picture and panel column, and follows it when the window is resized.
 void fitCanvas() {
   if (g_runner->options().size_given) return;
+  if (g_runner->exercise() != nullptr) {  // judged on the grader's picture, as natively
+    const int column = g_runner->options().hide_panel ? 0 : static_cast<int>(Runner::kPanelColumn);
+    g_runner->fitWindow(Runner::kExerciseWidth + column, Runner::kExerciseHeight);
+    return;
+  }
   double width = 0, height = 0;
   if (emscripten_get_element_css_size("#stage", &width, &height) != EMSCRIPTEN_RESULT_SUCCESS) {
     return;

@@ -1,5 +1,7 @@
 #include "core/arguments.hpp"
 
+#include <fstream>
+
 #include <algorithm>
 
 #include "core/text.hpp"
@@ -63,6 +65,31 @@ std::string readSet(Arguments& args, std::vector<std::string>& sets) {
   std::string value;
   if (!args.value(value)) return args.flag() + ": expected name=value";
   sets.push_back(value);
+  return {};
+}
+
+std::string readSettingsFile(const std::string& path, std::vector<std::string>& sets) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "--settings " + printable(path) + ": cannot read it";
+  std::vector<std::string> read;
+  int number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();  // written on Windows
+    const size_t start = line.find_first_not_of(" \t");
+    if (start == std::string::npos || line[start] == '#') continue;
+    line = line.substr(start, line.find_last_not_of(" \t") + 1 - start);
+    // A parameter's name, '=', its value: anything else is not a settings file.
+    const size_t eq = line.find('=');
+    const bool named = eq != std::string::npos && eq > 0 &&
+                       line.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_.") >= eq;
+    if (!named) {
+      return "--settings " + printable(path) + ":" + std::to_string(number) +
+             ": not a setting (name=value): '" + printable(line.substr(0, 60)) + "'";
+    }
+    read.push_back(line);
+  }
+  sets.insert(sets.end(), read.begin(), read.end());
   return {};
 }
 

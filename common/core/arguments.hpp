@@ -44,6 +44,10 @@ std::string readSize(Arguments& args, int& width, int& height, int minSide = 1);
 
 // --set name=value, appended to `sets` (checked later by Params::assign, which knows the names).
 std::string readSet(Arguments& args, std::vector<std::string>& sets);
+// --settings FILE: one name=value a line (what the panel's "Save settings" writes; blank lines
+// and lines starting with # are skipped), appended to `sets` in order. "" or one line naming
+// the file (and line) and what is wrong.
+std::string readSettingsFile(const std::string& path, std::vector<std::string>& sets);
 
 // An argument no branch took.
 std::string unknownOption(const std::string& arg);

@@ -160,6 +160,10 @@ class Params {
     Params& params_;
     bool was_;
   };
+  // While set, a parameter for which `why` says something is drawn locked (greyed, its
+  // tooltip saying why): an exercise's sliders that are not the student's to move. --set and
+  // the program itself still change it.
+  void lockWidgets(std::function<std::string(const Param&)> why) { locked_ = std::move(why); }
   // A lesson whose idea is a shared technique's settings (03: the shadow map itself) claims
   // them: the parameters whose names start with `prefix` are its own on the panel.
   void claim(const std::string& prefix);
@@ -209,6 +213,7 @@ class Params {
   std::map<std::string, std::string> editing_, refused_;
   std::uint32_t dirty_ = kDirtyAll;
   bool sharing_ = false;  // a SharedScope is open
+  std::function<std::string(const Param&)> locked_;
 };
 
 // Handles check their parameter's kind once, when the lesson takes them (a wrong kind is a

@@ -15,7 +15,8 @@ bool Params::drawWidgets(const std::function<bool(const Param&)>& which) {
   for (auto& p : params_) {
     if (!which(p)) continue;
     bool changed_now = false;
-    const std::string idle = p.inactive ? p.inactive(*this) : std::string();
+    std::string idle = locked_ ? locked_(p) : std::string();
+    if (idle.empty() && p.inactive) idle = p.inactive(*this);
     if (!idle.empty()) ImGui::BeginDisabled();
     const ImGuiSliderFlags flags =
         ImGuiSliderFlags_AlwaysClamp | (p.logarithmic ? ImGuiSliderFlags_Logarithmic : 0);

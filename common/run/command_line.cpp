@@ -52,6 +52,8 @@ const char* kUsage =
     "  --orbit DEG          in a window, turn the camera DEG degrees (1..90) around its\n"
     "                       target every frame, as a mouse drag does (to time a moving window)\n"
     "  --set name=value     set a parameter (repeatable); see --list-params\n"
+    "  --settings FILE      the settings in FILE, one name=value a line (what the panel's\n"
+    "                       \"Save settings\" writes), as --sets in their place\n"
     "  --list-params        list every parameter: name, type, default, range, help\n"
     "  --report FILE.json   parameters, timings, work counters, error against the truth\n"
     "  --truth-out FILE.png the ray-traced truth (white lit, black shadowed)\n"
@@ -153,6 +155,9 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
       why = readCount(args, o.orbit, 90);
     } else if (arg == "--set") {
       why = readSet(args, o.sets);
+    } else if (arg == "--settings") {
+      if (!args.value(value)) return arg + ": expected a file name";
+      why = readSettingsFile(value, o.sets);
     } else if (arg == "--truth-from") {
       if (!args.value(value)) return arg + ": expected a file name";
       o.truth_from = value;
@@ -169,7 +174,7 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
     // A verdict is a headless run measured against the truth, at the READMEs' size.
     o.headless = true;
     o.truth = true;
-    if (!o.size_given) o.width = 640, o.height = 480;
+    if (!o.size_given) o.width = Runner::kExerciseWidth, o.height = Runner::kExerciseHeight;
   }
   if (o.exercise > 0 && !o.truth) {
     return "--exercise judges by the truth: it cannot run with --no-truth";

@@ -1,6 +1,8 @@
 // The exercise a run was started with (--exercise N, --grade N; lesson/exercise.hpp): its
 // checks on the command line, its starting settings, its verdict on each truth, the grade.
+#include <algorithm>
 #include <cstdio>
+#include <fstream>
 
 #include "core/json.hpp"
 #include "run/runner.hpp"
@@ -41,7 +43,81 @@ std::string Runner::applyStartingSettings() {
   // A grade is measured on the lesson's own frame: a debug view (or the runner's truth and
   // error views, where the lesson draws nothing) would leave its counters out.
   if (options_.grade && exercise_.chosen) sets.push_back("view=shaded");
+  lockExerciseWidgets();
   return applySets(sets);
+}
+
+std::string Runner::chooseExercise(int n) {
+  std::vector<Exercise> all = lesson_->exercises();
+  if (n < 0 || n > static_cast<int>(all.size())) {
+    return "exercise " + std::to_string(n) + ": " + name_ + " has " + std::to_string(all.size()) +
+           " exercises";
+  }
+  const std::string view = params_.at("view").choice();
+  params_.resetToDefaults();
+  exercise_ = {};
+  options_.exercise = n;
+  std::string problem;
+  if (n > 0) {
+    exercise_.chosen = std::move(all[static_cast<size_t>(n - 1)]);
+    problem = applySets(exercise_.chosen->setup);
+  }
+  params_.setChoice(params_.at("view"), view);  // the student's view stays
+  lockExerciseWidgets();
+  // Judged on the grader's picture size (a page fits its canvas so too: page_main.cpp).
+  if (n > 0 && !options_.size_given) {
+    fitWindow(kExerciseWidth + (options_.hide_panel ? 0 : static_cast<int>(kPanelColumn)),
+              kExerciseHeight);
+  }
+  return problem;
+}
+
+void Runner::lockExerciseWidgets() {
+  if (!exercise_.chosen) {
+    params_.lockWidgets(nullptr);
+    return;
+  }
+  const Exercise ex = *exercise_.chosen;
+  const std::string why = "exercise " + std::to_string(options_.exercise) + " (" + ex.title +
+                          ") does not let you move this";
+  params_.lockWidgets([ex, why](const Param& p) { return allowedIn(ex, p.name) ? "" : why; });
+}
+
+// What a student changed, as name=value lines: with an exercise, what it lets them move.
+std::vector<std::string> Runner::changedSettings() const {
+  std::vector<std::string> lines;
+  for (const Param& p : params_.all()) {
+    if (p.name == "view") continue;
+    if (exercise_.chosen && !allowedIn(*exercise_.chosen, p.name)) continue;
+    const bool same =
+        p.kind == ParamKind::String
+            ? p.string_value == p.string_fallback
+            : std::equal(std::begin(p.value), std::end(p.value), std::begin(p.fallback));
+    if (!same) lines.push_back(p.name + "=" + p.text());
+  }
+  return lines;
+}
+
+std::string Runner::saveSettings(const std::string& path) const {
+  std::ofstream out(path);
+  out << "# " << name_ << " settings: " << name_ << " --settings " << path;
+  if (exercise_.chosen) {
+    out << "\n# exercise " << options_.exercise << ": " << exercise_.chosen->title
+        << "\n# grade it: " << name_ << " --grade " << options_.exercise << " --settings " << path;
+  }
+  out << "\n";
+  for (const std::string& line : changedSettings()) out << line << "\n";
+  out.flush();
+  return out ? "" : "cannot write " + path;
+}
+
+std::string Runner::settingsQuery() const {
+  std::string query;
+  if (exercise_.chosen) query = "exercise=" + std::to_string(options_.exercise);
+  for (const std::string& line : changedSettings()) {
+    query += (query.empty() ? "" : "&") + line;
+  }
+  return "?" + query;
 }
 
 void Runner::judgeExercise() {

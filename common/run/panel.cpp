@@ -222,12 +222,30 @@ void Runner::drawPanel(Frame& frame) {
       ImGui::TextDisabled("error: measuring...");
     }
   }
-  // The exercise (--exercise N), under the error it is judged by: its goal, each figure now,
-  // met or not, on the last truth measured.
+  // The lesson's exercises, one a choice: its goal, each figure now, met or not, on the last
+  // truth measured, under the error it is judged by.
+  if (const std::vector<Exercise> all = lesson_->exercises(); !all.empty() && options_.truth) {
+    std::vector<std::string> names = {"none: explore freely"};
+    for (size_t i = 0; i < all.size(); ++i)
+      names.push_back(std::to_string(i + 1) + ": " + all[i].title);
+    const int shown = std::clamp(options_.exercise, 0, static_cast<int>(all.size()));
+    if (ImGui::BeginCombo("exercise", names[static_cast<size_t>(shown)].c_str())) {
+      for (int k = 0; k < static_cast<int>(names.size()); ++k) {
+        if (ImGui::Selectable(names[static_cast<size_t>(k)].c_str(), k == shown) && k != shown) {
+          chooseExercise(k);
+        }
+      }
+      ImGui::EndCombo();
+    }
+  }
   if (const Exercise* ex = exercise()) {
     ImGui::Separator();
     ImGui::TextWrapped("Exercise %d: %s", options_.exercise, ex->title.c_str());
     ImGui::TextWrapped("%s", ex->goal.c_str());
+    if (options_.width != kExerciseWidth || options_.height != kExerciseHeight) {
+      ImGui::TextDisabled("(judged on a %dx%d picture, as --grade is; this one is %dx%d)",
+                          kExerciseWidth, kExerciseHeight, options_.width, options_.height);
+    }
     std::string allowed;
     for (const std::string& a : ex->allowed) allowed += (allowed.empty() ? "" : ", ") + a;
     const auto wrapped = [](ImVec4 colour, const std::string& text) {
@@ -251,6 +269,22 @@ void Runner::drawPanel(Frame& frame) {
         ImGui::TextWrapped("hint: %s", ex->hint.c_str());
       }
     }
+#ifndef __EMSCRIPTEN__
+    // The submission: a file --grade reads back (--settings), named after the lesson.
+    if (ImGui::Button("Save settings")) {
+      const std::string file =
+          name_ + "_exercise" + std::to_string(options_.exercise) + "_settings.txt";
+      const std::string problem = saveSettings(file);
+      window_.saved = problem.empty()
+                          ? "saved " + file + ": hand it in, or grade it: " + name_ + " --grade " +
+                                std::to_string(options_.exercise) + " --settings " + file
+                          : problem;
+    }
+    if (!window_.saved.empty()) ImGui::TextWrapped("%s", window_.saved.c_str());
+#else
+    // A page's submission is its address: these settings as a link.
+    ImGui::TextWrapped("as a link: %s", settingsQuery().c_str());
+#endif
   }
   // Where no technique's answer is defined, the panel says so before its numbers.
   ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.2f, 1.0f));

@@ -78,6 +78,9 @@ class Runner final : public LessonHost {
   // The panel's width as a column beside the picture, in window units (a window is the frame
   // plus this wide while the panel shows).
   static constexpr float kPanelColumn = 340.0f;
+  // The picture an exercise is judged on, everywhere: --grade, a window or a page with an
+  // exercise chosen (fragment counts and texels per pixel depend on the picture's size).
+  static constexpr int kExerciseWidth = 640, kExerciseHeight = 480;
   // Keeps one of the panel's folded sections open ("Light and camera"): a test or a
   // tutorial script aims at a widget there.
   void openPanelSection(const std::string& title) { window_.open_sections.insert(title); }
@@ -127,6 +130,15 @@ class Runner final : public LessonHost {
   // "" or why the command line's exercise cannot run: no such exercise, or (grading) a --set
   // of a parameter it does not let a student move.
   std::string exerciseProblem() const;
+  // Chooses exercise n (0: none) in a running lesson, as the panel's selector does: every
+  // parameter back to its default, the exercise's own settings, the sliders it does not let a
+  // student move locked. Returns "" or why not (no such exercise).
+  std::string chooseExercise(int n);
+  // The settings a student changed, one name=value a line (--settings reads them back): with
+  // an exercise, only those it lets a student move. Returns "" or why it could not write.
+  std::string saveSettings(const std::string& path) const;
+  // The same as a page's query (?a=b&c=d), for a link.
+  std::string settingsQuery() const;
   // The exercise's own settings, then the command line's --set list: what a run starts from
   // ("" or the first problem, exerciseProblem()'s included).
   std::string applyStartingSettings();
@@ -233,7 +245,9 @@ class Runner final : public LessonHost {
     Verdict verdict;
     long long judged_at = -1;  // truthsMeasured() when the verdict was made
   } exercise_;
-  void judgeExercise();             // after a truth is installed: the verdict on it
+  void judgeExercise();        // after a truth is installed: the verdict on it
+  void lockExerciseWidgets();  // the panel's sliders the exercise does not allow, locked
+  std::vector<std::string> changedSettings() const;  // saveSettings' lines
   TruthInputs gatherTruthInputs();  // render thread: what traceTruth needs of the GPU
   struct WindowState {
     bool open = false;
@@ -247,6 +261,7 @@ class Runner final : public LessonHost {
     int column = 0;
     glm::ivec2 framebuffer{0};
     std::set<std::string> open_sections;  // openPanelSection
+    std::string saved;                    // the panel's "Save settings": where, or why not
   } window_;
   // The window's frame: the framebuffer less the panel's column where it fits one.
   int columnFor(int framebufferWidth) const;

@@ -57,6 +57,8 @@ bool Runner::openWindow() {
     width = 1280 - static_cast<int>(kPanelColumn), height = 720;
   }
 #endif
+  if (options_.exercise > 0 && !options_.size_given)
+    width = kExerciseWidth, height = kExerciseHeight;
   if (!options_.hide_panel) width += static_cast<int>(kPanelColumn);
   GLFWwindow* window =
       glfwCreateWindow(width, height, (name_ + ": " + lesson_->title()).c_str(), nullptr, nullptr);
@@ -129,8 +131,10 @@ bool Runner::windowFrame() {
     // Orbit the eye around its target with the left mouse button, zoom with the wheel.
     double x = 0, y = 0;
     glfwGetCursorPos(window, &x, &y);
+    // An exercise that does not let the student move the camera does not let the mouse either.
+    const bool camera_locked = exercise() != nullptr && !exercise()->camera_free;
     const bool down = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-    if (down && !io.WantCaptureMouse) {
+    if (down && !io.WantCaptureMouse && !camera_locked) {
       if (dragging) {
         Param& pos = params_.at("camera.pos");
         const glm::vec3 target = params_.at("camera.target").v();
@@ -158,7 +162,7 @@ bool Runner::windowFrame() {
                                               glm::vec3(0.0f, 1.0f, 0.0f)) *
                                   glm::vec4(offset, 0.0f)));
     }
-    if (io.MouseWheel != 0.0f && !io.WantCaptureMouse) {
+    if (io.MouseWheel != 0.0f && !io.WantCaptureMouse && !camera_locked) {
       Param& pos = params_.at("camera.pos");
       const glm::vec3 target = params_.at("camera.target").v();
       params_.setVec3(pos, target + (pos.v() - target) * std::pow(0.9f, io.MouseWheel));

@@ -215,6 +215,24 @@ try {
     await page.close();
   }
 
+  // An exercise graded in the page, from a link with a solution and one without: the verdict
+  // under the canvas is the native grader's (docs/EXERCISES.md's solution for 04).
+  if (lesson === '04_bias_offset') {
+    for (const [query, verdict] of [['exercise=1&bias.mode=gradient', 'MET'], ['exercise=1', 'NOT MET']]) {
+      const page = await open(browser, `${server.url}${lesson}.html?${query}`);
+      const status = await page.waitFor(`(() => { const t = document.getElementById('status').textContent;
+                                                  return /exercise 1 [(][^)]*[)]: (MET|NOT MET): /.test(t) || shadowsPage.errors.length > 0 ? t : false; })()`, 240000);
+      const said = /exercise 1 [(][^)]*[)]: (MET|NOT MET): /.exec(status)?.[1];
+      if (said !== verdict) fail(`?${query}: the page says ${said ?? 'nothing'}, the grader ${verdict} ("${status}")`);
+      const graded = spawnSync(native, ['--grade', '1', ...query.split('&').slice(1).flatMap((q) => ['--set', q]), '--out', '/dev/null'], { encoding: 'utf8' });
+      const natively = /: (MET|NOT MET): /.exec(graded.stdout)?.[1];
+      if (natively !== verdict) fail(`?${query}: the native gles30 grader says ${natively} (${graded.stdout.trim()})`);
+      console.log(`${lesson} ?${query}: ${said} in the page and natively`);
+      await checkClean(page, `?${query}`);
+      await page.close();
+    }
+  }
+
   // Bad input: an unknown parameter and one out of range, each the command line's line. The
   // page's shell, parser and notices are every lesson's: one lesson checks them (kShellLesson).
   for (const bad of lesson === kShellLesson ? ['no.such.param=1', 'camera.fov=500'] : []) {
