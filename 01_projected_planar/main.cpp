@@ -104,6 +104,45 @@ class ProjectedPlanar final : public Lesson {
     ImGui::End();
   }
 
+  // docs/EXERCISES.md has the intended solutions.
+  std::vector<Exercise> exercises() const override {
+    using B = Figure::Bound;
+    return {{.title = "The shadow fights the floor (slides 13 and 18)",
+             .goal = "Without the stencil mark the flattened shadow is depth-tested against the "
+                     "floor it lies in, and loses about half the time: 3.1 % false lit. Bring "
+                     "false lit to 0.1 % or less, and false shadow to 0.15 % or less, moving "
+                     "only the fixes.",
+             .setup = {"fix.receiver=false", "fix.offset=false"},
+             .allowed = {"fix.receiver", "fix.offset", "fix.once", "fix.clip", "dimming"},
+             .figures = {{"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.15},
+                         {"/error/false_lit_pct", "false lit %", B::AtMost, 0.1}},
+             .hint = "The shadow and the floor have the same depth, so the depth test flips a "
+                     "coin. Lift the shadow toward the eye (slide 13), or let the stencil say "
+                     "where the floor is seen and skip the depth test (slide 19)."},
+            {.title = "A light below the casters' tops: the anti-shadow",
+             .goal = "The light is at height 1.1, under the torus's top (1.9) and the "
+                     "pyramid's (1.6), and the shader divides by w itself: the parts above the "
+                     "light flip through it onto the floor, 68 % false shadow. Bring false "
+                     "shadow to 0.05 % or less, keeping false lit at 2.8 % or less (the 2.3 % no "
+                     "planar shadow can fix), without moving the light.",
+             .setup = {"light.pos=2.5,1.1,2.5", "fix.homogeneous=false"},
+             .allowed = {"fix.homogeneous", "fix.clip", "fix.receiver", "fix.once", "dimming"},
+             .figures = {{"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.05},
+                         {"/error/false_lit_pct", "false lit %", B::AtMost, 2.8}},
+             .hint = "w = P.L - P.v is negative above the light. Divided in the shader, those "
+                     "points land on the other side of the light; what does the clipper do "
+                     "with w < 0?"},
+            {.title = "Casters behind the receiver (slide 21)",
+             .goal = "The floor is raised to 1 and buries the sphere and the feet of the torus "
+                     "and the pyramid, which still cast up through it: 4.3 % false shadow. "
+                     "Bring false shadow to 0.05 % or less without moving the floor.",
+             .setup = {"plane.offset=1", "fix.clip=false"},
+             .allowed = {"fix.clip", "fix.receiver", "fix.once", "fix.homogeneous", "dimming"},
+             .figures = {{"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.05}},
+             .hint = "M sends a point under the plane onto the plane too. Which part of a "
+                     "caster should never reach the projection?"}};
+  }
+
   void report(JsonWriter& json) const override {
     json.beginArray("receiver_plane");
     for (int k = 0; k < 4; ++k) json.value("", plane_[k]);

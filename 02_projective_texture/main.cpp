@@ -141,6 +141,33 @@ class ProjectiveTexture final : public Lesson {
     }
   }
 
+  // docs/EXERCISES.md has the intended solutions.
+  std::vector<Exercise> exercises() const override {
+    using B = Figure::Bound;
+    return {{.title = "Where a projector with no depth test is right",
+             .goal = "A slide projector compares no depths: its light goes through the casters "
+                     "onto what they should shadow, 7.3 % false lit from the preset's light. "
+                     "Move the projector (it keeps aiming at the scene's centre) until false lit "
+                     "is 0.5 % or less.",
+             .setup = {"scene=torus_pyramid"},
+             .allowed = {"light.pos"},
+             .figures = {{"/error/false_lit_pct", "false lit %", B::AtMost, 0.5}},
+             .hint = "The error is every surface the projector lights through a caster. From "
+                     "which point does no surface you can see hide behind another?"},
+            {.title = "Don't draw what lies behind the projector (seed 000)",
+             .goal = "The projector sits low behind the sphere, pointing up; the q test hides "
+                     "the mirrored copy pixel by pixel, but the projector pass still draws all 4 "
+                     "objects, the sphere that lies wholly behind it too. Draw at most 3, "
+                     "without darkening what it lights (false shadow 0.05 % or less).",
+             .setup = {"light.pos=0.6,0.3,0.6", "light.target=0.6,2.5,-2.4", "light.fov=80",
+                       "fix.behind=off"},
+             .allowed = {"fix.behind", "falloff"},
+             .figures = {{"/counters/projector/draw_calls", "projector draw calls", B::AtMost, 3},
+                         {"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.05}},
+             .hint = "The q test works per pixel, a clip plane per triangle. Kilgard: \"simply "
+                     "avoid drawing geometry behind the light\"."}};
+  }
+
   void report(JsonWriter& json) const override {
     json.value("slide", loaded_);
     json.beginArray("slide_size");

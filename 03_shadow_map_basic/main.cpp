@@ -75,6 +75,33 @@ class ShadowMapBasic final : public Lesson {
     if (f.mode != "visibility") map_.drawInset(f);
   }
 
+  // docs/EXERCISES.md has the intended solutions.
+  std::vector<Exercise> exercises() const override {
+    using B = Figure::Bound;
+    return {{.title = "Just enough map for the dueling frusta",
+             .goal = "Light and eye face each other, and a 256-wide map leaves 0.50 % false "
+                     "lit along the shadows' staircase edges (nearest filtering). Find a map "
+                     "size that brings false lit to 0.15 % or less without wasting texels: at "
+                     "most 0.5 texels per pixel (the panel's median, least axis).",
+             .setup = {"scene=dueling", "shadow.filter=nearest", "shadow.size=256"},
+             .allowed = {"shadow.size"},
+             .figures = {{"/error/false_lit_pct", "false lit %", B::AtMost, 0.15},
+                         {"/texels_per_pixel/min_axis/median", "texels per pixel", B::AtMost, 0.5}},
+             .hint = "False lit falls about as 1/size, texels per pixel grows as size: there is "
+                     "a window between them. view=aliasing shows where the texels fall short."},
+            {.title = "From dueling frusta to a miner's lamp",
+             .goal = "Light and eye face each other: 89 % of the pixels get less than one map "
+                     "texel (1024-wide map). Move the light (it keeps aiming where it aims, "
+                     "same map) until at most 10 % are under-sampled, lighting at least 140000 "
+                     "counted pixels.",
+             .setup = {"scene=dueling"},
+             .allowed = {"light.pos"},
+             .figures = {{"/undersampled_pct", "under-sampled %", B::AtMost, 10},
+                         {"/error/counted_pixels", "counted pixels", B::AtLeast, 140000}},
+             .hint = "\"Great match if eye and light frustum's are nearly identical\" (Kilgard). "
+                     "Where is the eye?"}};
+  }
+
   void report(JsonWriter& json) const override {
     json.value("light_near_used", map_.frustum().near);
     json.value("light_far_used", map_.frustum().far);

@@ -151,6 +151,36 @@ class PcfDithered final : public Lesson {
     }
   }
 
+  // docs/EXERCISES.md has the intended solutions.
+  std::vector<Exercise> exercises() const override {
+    using B = Figure::Bound;
+    return {{.title = "64 taps only where the penumbra is",
+             .goal = "A 64-tap grid with every tap taken: 64 lookups for every pixel, lit, "
+                     "shadowed or in between. Keep its shadow (vis_mae 0.0011 or less against "
+                     "its area light, false lit 0.05 % or less) for at most 8 taps per "
+                     "filtered fragment.",
+             .setup = {"pcf.mode=grid", "pcf.taps=64", "pcf.early_out=false"},
+             .allowed = {"pcf.early_out", "pcf.taps"},
+             .figures = {{"/taps_per_filtered_fragment", "taps per fragment", B::AtMost, 8},
+                         {"/error/vis_mae", "vis_mae", B::AtMost, 0.0011},
+                         {"/error/false_lit_pct", "false lit %", B::AtMost, 0.05},
+                         {"/truth_area_radius", "area light radius", B::AtLeast, 0.06}},
+             .hint = "In most pixels all 64 comparisons agree. Can 4 of them, at the kernel's "
+                     "corners, tell? (view=taps)"},
+            {.title = "A soft edge for one lookup (seed 000, GL_LINEAR)",
+             .goal = "A 256-wide map with no filter: a hard staircase, one lookup a pixel, "
+                     "measured against a point light. Soften it into a penumbra the lesson "
+                     "matches to an area light (radius 0.03 or more), within vis_mae 0.003 of "
+                     "it, still with at most 1 tap per filtered fragment.",
+             .setup = {"shadow.size=256", "pcf.mode=none"},
+             .allowed = {"pcf.mode", "pcf.taps", "pcf.radius"},
+             .figures = {{"/taps_per_filtered_fragment", "taps per fragment", B::AtMost, 1},
+                         {"/truth_area_radius", "area light radius", B::AtLeast, 0.03},
+                         {"/error/vis_mae", "vis_mae", B::AtMost, 0.003}},
+             .hint = "A tap is one lookup in the shader. Can the texture unit compare more "
+                     "than one texel per lookup?"}};
+  }
+
   void report(JsonWriter& json) const override {
     json.value("kernel_half_width_texels", kernel_texels_);
     json.value("truth_area_radius", area_radius_);

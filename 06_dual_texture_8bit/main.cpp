@@ -71,6 +71,37 @@ class DualTexture8bit final : public Lesson {
     ImGui::Text("pass 2 lit %s fragments", countText(lit_fragments_).c_str());
   }
 
+  // docs/EXERCISES.md has the intended solutions.
+  std::vector<Exercise> exercises() const override {
+    using B = Figure::Bound;
+    const std::vector<Figure> right = {
+        {"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.1},
+        {"/error/false_lit_pct", "false lit %", B::AtMost, 0.1}};
+    std::vector<Figure> near_plane = right;
+    near_plane.push_back({"/light_near_used", "light near plane", B::AtMost, 1.5});
+    return {{.title = "How near can the near plane come? (8 bits)",
+             .goal = "Kilgard's expanded frustum (near 0.1, far 500) has lost every shadow: "
+                     "7.3 % false lit. Bring false shadow and false lit both to 0.1 % or less "
+                     "with the light's near plane at 1.5 or nearer, so that a caster 1.5 units "
+                     "from the light would still be in the map.",
+             .setup = {"shadow.fit=false", "light.near=0.1", "light.far=500"},
+             .allowed = {"light.near", "light.far"},
+             .figures = near_plane,
+             .hint = "Watch the panel's step at the nearest caster: with window depth one step "
+                     "is about z*z / (255 * near). Which of the two planes is in that formula?"},
+            {.title = "Heidrich's linear depth: far decides",
+             .goal = "A caster may come within 0.05 of the light, so the near plane stays at "
+                     "0.05, and with far at 1000 window depth has nothing left: 7.3 % false "
+                     "lit. Bring false shadow and false lit both to 0.1 % or less without "
+                     "moving the near plane.",
+             .setup = {"shadow.fit=false", "light.near=0.05", "light.far=1000"},
+             .allowed = {"map.encoding", "light.far"},
+             .figures = right,
+             .hint = "With window depth the near plane decides, and it is fixed here. Which "
+                     "encoding spreads its 255 steps evenly from near to far, and what sizes a "
+                     "step then?"}};
+  }
+
   void report(JsonWriter& json) const override { map_.report(json); }
 
  private:

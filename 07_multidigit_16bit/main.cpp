@@ -76,6 +76,34 @@ class MultiDigit16bit final : public Lesson {
                        countText(lit_[1]).c_str());
   }
 
+  // docs/EXERCISES.md has the intended solutions.
+  std::vector<Exercise> exercises() const override {
+    using B = Figure::Bound;
+    return {{.title = "How near can the near plane come? (16 bits)",
+             .goal = "At the sliders' extremes (near 0.001, far 1000) even 16 bits come loose: "
+                     "3.1 % false lit. Bring false shadow and false lit both to 0.1 % or less "
+                     "with the light's near plane at 0.01 or nearer, a hundred times nearer "
+                     "than lesson 06's 8 bits hold.",
+             .setup = {"shadow.fit=false", "light.near=0.001", "light.far=1000"},
+             .allowed = {"light.near", "light.far"},
+             .figures = {{"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.1},
+                         {"/error/false_lit_pct", "false lit %", B::AtMost, 0.1},
+                         {"/light_near_used", "light near plane", B::AtMost, 0.01}},
+             .hint = "One 16-bit step at the nearest caster is about z*z / (65535 * near): the "
+                     "panel shows it. Does far appear in it?"},
+            {.title = "Ties at a 257th of the step: the slope term",
+             .goal = "With no bias every lit surface ties with its own texel and a tie is "
+                     "shadowed: 13 % false shadow. Bring false shadow and false lit both to "
+                     "0.05 % or less, moving only the bias.",
+             .setup = {"bias.steps=0", "bias.factor=0"},
+             .allowed = {"bias.mode", "bias.factor", "bias.steps"},
+             .figures = {{"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.05},
+                         {"/error/false_lit_pct", "false lit %", B::AtMost, 0.05}},
+             .hint = "Lesson 06's 3 constant steps leave 11 % here, and even 64 leave 1.3 %: "
+                     "across one texel a tilted surface's depth changes by many 16-bit steps. "
+                     "Which term of glPolygonOffset grows with the slope?"}};
+  }
+
   void report(JsonWriter& json) const override { map_.report(json); }
 
  private:

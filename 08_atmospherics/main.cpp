@@ -126,6 +126,22 @@ class Atmospherics final : public Lesson {
     ImGui::Text("slice fragments passed %s", countText(passed_).c_str());
   }
 
+  // docs/EXERCISES.md has the intended solutions.
+  std::vector<Exercise> exercises() const override {
+    using B = Figure::Bound;
+    return {{.title = "The fewest slices",
+             .goal = "8 slices leave the air 37 % off the truth (relative RMSE). Bring the air's "
+                     "relative RMSE to 7.5 % or less with at most 48 slices: each slice costs "
+                     "its share of the frame.",
+             .setup = {"air.slices=8"},
+             .allowed = {"air.slices"},
+             .figures = {{"/error/air_rel_rmse", "air rel. RMSE", B::AtMost, 0.075},
+                         {"/counters/air_slices", "slices", B::AtMost, 48}},
+             .hint = "Each slice is one term of a Riemann sum along the eye ray: the error "
+                     "halves with each doubling of the slices. 8 give 37 %; how many give "
+                     "7.5 %?"}};
+  }
+
   void report(JsonWriter& json) const override {
     json.value("air_depth_near", near_);
     json.value("air_depth_far", far_);

@@ -106,6 +106,44 @@ class PlaneOptimal final : public Lesson {
     if (f.mode != "visibility") map_.drawInset(f);
   }
 
+  // docs/EXERCISES.md has the intended solutions.
+  std::vector<Exercise> exercises() const override {
+    using B = Figure::Bound;
+    return {
+        {.title = "One texel per pixel on the floor, light and eye face to face",
+         .goal = "Through the light's own frustum the dueling frusta's floor gets 0.42 "
+                 "texels per pixel along its least-sampled axis and 1.23 along its most, "
+                 "and 89 % of the pixels are under-sampled. Give the floor one texel per "
+                 "pixel (the medians of both axes between 0.95 and 1.05) with at most 1 % "
+                 "of the pixels under-sampled, at 640x480.",
+         .setup = {"light.projection=uniform"},
+         .allowed = {"light.projection", "lispsm.n", "shadow.size", "shadow.height"},
+         .figures = {{"/plane/texels_per_pixel/min_axis/median",
+                      "floor texels per pixel, least axis", B::AtLeast, 0.95},
+                     {"/plane/texels_per_pixel/max_axis/median",
+                      "floor texels per pixel, most axis", B::AtMost, 1.05},
+                     {"/undersampled_pct", "under-sampled %", B::AtMost, 1.0}},
+         .hint = "No map size gives the light's own frustum texels the shape of the eye's "
+                 "pixels. Which projection makes the map's image of the floor the camera's "
+                 "picture of it, and how many texels must the map then hold?"},
+        {.title = "Sampling is not depth",
+         .goal = "On the receding floor the plane-optimal map, the picture's size, gives "
+                 "the floor one texel per pixel, but a directional light leaves it no "
+                 "depth: 5.5 % false shadow, 5.2 % false lit. Keep the floor's one texel "
+                 "per pixel (least axis median 0.95 or more) and bring false shadow and "
+                 "false lit both to 0.2 % or less.",
+         .setup = {"scene=receding", "shadow.size=640", "shadow.height=480", "depth.replace=false"},
+         .allowed = {"light.projection", "lispsm.n", "shadow.format", "depth.replace"},
+         .figures = {{"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.2},
+                     {"/error/false_lit_pct", "false lit %", B::AtMost, 0.2},
+                     {"/plane/texels_per_pixel/min_axis/median",
+                      "floor texels per pixel, least axis", B::AtLeast, 0.95}},
+         .hint = "P L = 0: every point of a light ray lands on one texel with one z/w, "
+                 "and no number of bits tells apart what is stored the same. The warp "
+                 "should move texels and nothing else: what should the map store as "
+                 "depth?"}};
+  }
+
   void report(JsonWriter& json) const override {
     json.value("projection_used", used_name_);
     json.value("fallback_reason", fallback_);
