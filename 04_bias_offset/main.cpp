@@ -157,7 +157,20 @@ class BiasOffset final : public Lesson {
              .figures = {{"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.07},
                          {"/error/false_lit_pct", "false lit %", B::AtMost, 0.07}},
              .hint = "back_faces leaves the floor's far edge lit under the casters; which mode "
-                     "scales the bias with the receiver's slope, not the caster's?"}};
+                     "scales the bias with the receiver's slope, not the caster's?"},
+            {.title = "The same offset on a 16-bit map: units are steps",
+             .goal = "glPolygonOffset(1.1, 4000) is clean on a 24-bit map. On a 16-bit map the "
+                     "same setting detaches every shadow: 1.8 % false lit. Give the 16-bit map "
+                     "the same offset in depth as 4000 units gave the 24-bit one (to within "
+                     "6 %), and so both errors 0.06 % or less, moving only the units.",
+             .setup = {"shadow.format=16", "bias.mode=polygon_offset", "bias.units=4000"},
+             .allowed = {"bias.units"},
+             .figures = {{"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.06},
+                         {"/error/false_lit_pct", "false lit %", B::AtMost, 0.06},
+                         {"/params/bias.units", "units", B::AtLeast, 14.7},
+                         {"/params/bias.units", "units", B::AtMost, 16.6}},
+             .hint = "`units` counts steps of the map's depth format (the panel's depth step). "
+                     "How many 24-bit steps make one 16-bit step?"}};
   }
 
   void report(JsonWriter& json) const override {

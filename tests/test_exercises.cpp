@@ -123,7 +123,7 @@ TEST(Exercises, WhatIsNotTheStudentsToSetIsRefusedInOneLine) {
            {"04_bias_offset", "--grade 1 --set shadow.size=4096", "not shadow.size"},
            {"04_bias_offset", "--grade 1 --set camera.pos=0,1,2", "not camera.pos"},
            {"09_shadow_volumes", "--grade 1 --set scene=torus_pyramid", "not scene"},
-           {"04_bias_offset", "--grade 7", "has exercises 1..1"},
+           {"04_bias_offset", "--grade 7", "has exercises 1..2"},
            {"03_shadow_map_basic", "--exercise 3", "has exercises 1..2"},
            {"04_bias_offset", "--exercise 1 --grade 2", "--grade: a second, different exercise"},
            {"04_bias_offset", "--exercise 1 --no-truth", "cannot run with --no-truth"}}) {
