@@ -221,7 +221,7 @@ TEST(Lesson03, ALightMovedInThePanelRendersExactlyAsTheSameLightSetOnTheCommandL
   // built for the new light, not the one the frame started with (a stale map once stayed
   // on screen with misplaced shadows until something else changed).
   auto dragged = startLesson(kLesson, {"inset=false"}, 800, 600, /*panel=*/true);
-  dragged->openPanelSection("Light and camera");  // folded below the lesson's own sliders
+  dragged->window().openPanelSection("Light and camera");  // folded below the lesson's own sliders
   dragged->setMouse({-1, -1}, false);
   dragged->renderFrame();
   dragged->renderFrame();
@@ -244,7 +244,7 @@ TEST(Lesson03, ALightMovedInThePanelRendersExactlyAsTheSameLightSetOnTheCommandL
   const double moved_false_lit = dragged->measureError().metrics.false_lit_pct;
   dragged.reset();  // one GL and ImGui context at a time
   auto fresh = startLesson(kLesson, {"inset=false", value}, 800, 600, /*panel=*/true);
-  fresh->openPanelSection("Light and camera");
+  fresh->window().openPanelSection("Light and camera");
   fresh->setMouse({-1, -1}, false);
   fresh->renderFrame();
   const Image expected = fresh->readImage();

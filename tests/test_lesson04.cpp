@@ -318,7 +318,7 @@ namespace {
 
 TEST(Lesson04, AnExerciseChosenInThePanelLocksWhatItDoesNotAllowAndSavesWhatTheStudentMoved) {
   auto runner = startLesson(kLesson, {"inset=false"}, 900, 1000, /*panel=*/true);
-  ASSERT_EQ(runner->chooseExercise(1), "");
+  ASSERT_EQ(runner->exercises().choose(1), "");
   EXPECT_EQ(runner->params().at("scene").choice(), "grazing") << "its own starting point";
   runner->setMouse({-1, -1}, false);
   runner->renderFrame();
@@ -340,18 +340,18 @@ TEST(Lesson04, AnExerciseChosenInThePanelLocksWhatItDoesNotAllowAndSavesWhatTheS
   // The submission: what the student moved and may move, nothing else.
   const std::filesystem::path file =
       std::filesystem::temp_directory_path() / ("shadows_saved_" + std::to_string(getpid()));
-  ASSERT_EQ(runner->saveSettings(file.string()), "");
+  ASSERT_EQ(runner->exercises().save(file.string()), "");
   std::ifstream in(file);
   const std::string saved{std::istreambuf_iterator<char>(in), {}};
   EXPECT_NE(saved.find("\nbias.units=0\n"), std::string::npos) << saved;
   EXPECT_EQ(saved.find("scene="), std::string::npos) << saved;
   EXPECT_NE(saved.find("--grade 1 --settings"), std::string::npos) << saved;
-  EXPECT_EQ(runner->settingsQuery(), "?exercise=1&bias.units=0");
+  EXPECT_EQ(runner->exercises().query(), "?exercise=1&bias.units=0");
   std::filesystem::remove(file);
   // None: every slider free again, the defaults back.
-  ASSERT_EQ(runner->chooseExercise(0), "");
+  ASSERT_EQ(runner->exercises().choose(0), "");
   EXPECT_EQ(runner->params().at("scene").choice(), "torus_pyramid");
-  EXPECT_NE(runner->chooseExercise(5), "");
+  EXPECT_NE(runner->exercises().choose(5), "");
   EXPECT_EQ(runner->glErrors(), 0);
 }
 

@@ -26,10 +26,10 @@ TEST(TruthOffTheRenderThread, FramesGoOnWhileItIsTracedAndTheResultIsTheBlocking
     auto runner = testing::startLesson(lesson, {}, 160, 120);
     runner->renderFrame();
     runner->beginErrorMeasure();
-    EXPECT_TRUE(runner->errorMeasureRunning());
+    EXPECT_TRUE(runner->truth().running());
     runner->beginErrorMeasure();  // one job at a time: a second call changes nothing
     while (!runner->pollErrorMeasure()) runner->renderFrame();  // frames while it traces
-    EXPECT_FALSE(runner->errorMeasureRunning());
+    EXPECT_FALSE(runner->truth().running());
     ASSERT_TRUE(runner->lastError().valid) << lesson;
     expectSameMetrics(runner->lastError().metrics, expected, lesson);
     EXPECT_EQ(runner->glErrors(), 0) << lesson;

@@ -36,13 +36,13 @@ void failed(const std::string& line) {
 std::string errorSummary() {
   if (!Runner::haveTruth()) return Runner::truthUnavailable();
   char line[160];
-  if (g_runner->errorMeasureRunning()) {
+  if (g_runner->truth().running()) {
     std::snprintf(line, sizeof line, "tracing the truth (three-mesh-bvh, in Web Workers): %.0f %%",
                   100.0 * g_runner->errorMeasureProgress());
     return line;
   }
   const shadows::ErrorState& error = g_runner->lastError();
-  if (g_runner->truthFailed()) return "the ray tracer failed: the browser's console says why";
+  if (g_runner->truth().failed()) return "the ray tracer failed: the browser's console says why";
   if (!error.valid) return "";
   // Lesson 08's air is measured on its own pixels, counted surfaces or not.
   char air[64] = "";
@@ -62,9 +62,9 @@ std::string errorSummary() {
 // The exercise's verdict on the last truth, one line, as --grade prints it: the page's
 // grade of the settings in its address (?exercise=N&...).
 std::string exerciseSummary() {
-  const shadows::Exercise* ex = g_runner->exercise();
+  const shadows::Exercise* ex = g_runner->exercises().chosen();
   if (ex == nullptr) return "";
-  const shadows::Verdict& v = g_runner->exerciseVerdict();
+  const shadows::Verdict& v = g_runner->exercises().verdict();
   std::string line =
       "\nexercise " + std::to_string(g_runner->options().exercise) + " (" + ex->title + "): ";
   if (v.figures.empty()) return line + "measuring...";
@@ -86,17 +86,18 @@ void publish() {
                           UTF8ToString($6));
       },
       static_cast<double>(g_frames), shadows::GlErrorLog::count(),
-      static_cast<double>(g_runner->truthsMeasured()), text ? 1 : 0, cost.c_str(), counters.c_str(),
-      error.c_str());
+      static_cast<double>(g_runner->truth().measured()), text ? 1 : 0, cost.c_str(),
+      counters.c_str(), error.c_str());
 }
 
 // Without ?size= the canvas fills the page's stage (the browser's window less the header and
 // the lines under it), picture and panel column, and follows it when the window is resized.
 void fitCanvas() {
   if (g_runner->options().size_given) return;
-  if (g_runner->exercise() != nullptr) {  // judged on the grader's picture, as natively
-    const int column = g_runner->options().hide_panel ? 0 : static_cast<int>(Runner::kPanelColumn);
-    g_runner->fitWindow(Runner::kExerciseWidth + column, Runner::kExerciseHeight);
+  if (g_runner->exercises().chosen() != nullptr) {  // judged on the grader's picture, as natively
+    const int column =
+        g_runner->options().hide_panel ? 0 : static_cast<int>(shadows::RunnerWindow::kPanelColumn);
+    g_runner->window().fit(Runner::kExerciseWidth + column, Runner::kExerciseHeight);
     return;
   }
   double width = 0, height = 0;
@@ -109,17 +110,17 @@ void fitCanvas() {
   const auto fit = [&](double css, int least) {
     return std::clamp(static_cast<int>(css), least, std::max(least, largest));
   };
-  g_runner->fitWindow(fit(width, 480), fit(height, 240));
+  g_runner->window().fit(fit(width, 480), fit(height, 240));
 }
 
 void frame() {
   try {
     fitCanvas();
-    const bool more = g_runner->windowFrame();
+    const bool more = g_runner->window().frame();
     ++g_frames;
     publish();
     if (!more) {
-      g_runner->closeWindow();
+      g_runner->window().end();
       emscripten_cancel_main_loop();
     }
   } catch (const std::exception& e) {
@@ -131,7 +132,7 @@ void frame() {
 }  // namespace
 
 extern "C" EMSCRIPTEN_KEEPALIVE void shadows_screenshot() {
-  if (g_runner) g_runner->requestScreenshot();
+  if (g_runner) g_runner->window().requestScreenshot();
 }
 
 int main(int argc, char** argv) {
@@ -160,7 +161,7 @@ int main(int argc, char** argv) {
       }
       g_runner = make(defaults);
     }
-    if (!g_runner->openWindow()) {
+    if (!g_runner->window().begin()) {
       failed(name + ": cannot open a WebGL 2 canvas");
       return 1;
     }

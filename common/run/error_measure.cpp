@@ -203,19 +203,19 @@ const ErrorState& Runner::measureError() {
   // A page cannot wait for its worker; its answer, when it comes, answers no job any more.
   truth_.page_job.reset();
   if (truth_.current(errorKey())) {
-    judgeExercise();
+    exercise_.judge();
     return truth_.error();
   }
   TruthResult result = traceTruth(gatherTruthInputs());
   truth_.install(std::move(result), errorKey());
-  judgeExercise();
+  exercise_.judge();
   return truth_.error();
 }
 
 #ifndef __EMSCRIPTEN__
 
 void Runner::beginErrorMeasure() {
-  if (errorMeasureRunning() || !haveTruth()) return;
+  if (truth_.running() || !haveTruth()) return;
   truth_.thread_job = std::async(std::launch::async, &traceTruth, gatherTruthInputs());
 }
 
@@ -225,7 +225,7 @@ bool Runner::pollErrorMeasure() {
     return false;
   }
   truth_.install(truth_.thread_job.get(), errorKey());
-  judgeExercise();
+  exercise_.judge();
   return true;
 }
 
@@ -236,7 +236,7 @@ double Runner::errorMeasureProgress() const {
 #else  // a page: no threads, so the rays are traced by its Web Worker (web/truth/page.mjs)
 
 void Runner::beginErrorMeasure() {
-  if (errorMeasureRunning() || !haveTruth()) return;
+  if (truth_.running() || !haveTruth()) return;
   auto inputs = std::make_shared<TruthInputs>(gatherTruthInputs());
   if (postTruthJob(serializeTruthJob(inputs->job))) {
     truth_.page_job = std::move(inputs);
@@ -244,7 +244,7 @@ void Runner::beginErrorMeasure() {
     // No worker: on this thread, the page waits.
     TruthResult result = traceTruth(std::move(*inputs));
     truth_.install(std::move(result), errorKey());
-    judgeExercise();
+    exercise_.judge();
   }
 }
 
@@ -261,7 +261,7 @@ bool Runner::pollErrorMeasure() {
   inputs->given = parseTruthTrace(answer.trace_bytes);
   TruthResult result = traceTruth(std::move(*inputs));
   truth_.install(std::move(result), errorKey());
-  judgeExercise();
+  exercise_.judge();
   return true;
 }
 

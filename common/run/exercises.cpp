@@ -1,5 +1,6 @@
-// The exercise a run was started with (--exercise N, --grade N; lesson/exercise.hpp): its
-// checks on the command line, its starting settings, its verdict on each truth, the grade.
+// ExerciseRun (run/exercise_run.hpp): the exercise a run was started with or chose, its checks
+// on the command line, its starting settings and locks, its verdict on each truth, the
+// student's settings for the grader, and the grade.
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -9,86 +10,99 @@
 
 namespace shadows {
 
-std::string Runner::exerciseProblem() const {
-  if (options_.exercise == 0) return {};
+void ExerciseRun::pick(int n) {
+  std::vector<Exercise> all = runner_.lesson_->exercises();
+  if (n > 0 && n <= static_cast<int>(all.size())) {
+    chosen_ = std::move(all[static_cast<size_t>(n - 1)]);
+  }
+}
+
+std::string ExerciseRun::problem() const {
+  const RunOptions& options = runner_.options_;
+  if (options.exercise == 0) return {};
   const std::string flag =
-      std::string(options_.grade ? "--grade " : "--exercise ") + std::to_string(options_.exercise);
-  if (!exercise_.chosen) {
-    const size_t count = lesson_->exercises().size();
-    return flag + ": " + name_ + " has " +
+      std::string(options.grade ? "--grade " : "--exercise ") + std::to_string(options.exercise);
+  if (!chosen_) {
+    const size_t count = runner_.lesson_->exercises().size();
+    return flag + ": " + runner_.name_ + " has " +
            (count == 0 ? std::string("no exercises")
                        : "exercises 1.." + std::to_string(count) + " (docs/EXERCISES.md)");
   }
-  if (!options_.grade) return {};
+  if (!options.grade) return {};
   // A submission moves only what the exercise lets a student move.
-  for (const std::string& set : options_.sets) {
+  for (const std::string& set : options.sets) {
     const std::string name = set.substr(0, set.find('='));
-    if (allowedIn(*exercise_.chosen, name)) continue;
+    if (allowedIn(*chosen_, name)) continue;
     std::string allowed;
-    for (const std::string& a : exercise_.chosen->allowed)
-      allowed += (allowed.empty() ? "" : ", ") + a;
+    for (const std::string& a : chosen_->allowed) allowed += (allowed.empty() ? "" : ", ") + a;
     return flag + ": the exercise lets you set " + allowed +
-           (exercise_.chosen->camera_free ? ", camera.* and view" : " and view (not the camera)") +
+           (chosen_->camera_free ? ", camera.* and view" : " and view (not the camera)") +
            "; not " + name;
   }
   return {};
 }
 
 std::string Runner::applyStartingSettings() {
-  if (std::string problem = exerciseProblem(); !problem.empty()) return problem;
+  if (std::string problem = exercise_.problem(); !problem.empty()) return problem;
   // An exercise starts from its own settings; the student's come after them.
   std::vector<std::string> sets =
-      exercise_.chosen ? exercise_.chosen->setup : std::vector<std::string>{};
+      exercise_.chosen() ? exercise_.chosen()->setup : std::vector<std::string>{};
   sets.insert(sets.end(), options_.sets.begin(), options_.sets.end());
   // A grade is measured on the lesson's own frame: a debug view (or the runner's truth and
   // error views, where the lesson draws nothing) would leave its counters out.
-  if (options_.grade && exercise_.chosen) sets.push_back("view=shaded");
-  lockExerciseWidgets();
+  if (options_.grade && exercise_.chosen()) sets.push_back("view=shaded");
+  exercise_.lockWidgets();
   return applySets(sets);
 }
 
-std::string Runner::chooseExercise(int n) {
-  std::vector<Exercise> all = lesson_->exercises();
+std::string ExerciseRun::choose(int n) {
+  std::vector<Exercise> all = runner_.lesson_->exercises();
   if (n < 0 || n > static_cast<int>(all.size())) {
-    return "exercise " + std::to_string(n) + ": " + name_ + " has " + std::to_string(all.size()) +
-           " exercises";
+    return "exercise " + std::to_string(n) + ": " + runner_.name_ + " has " +
+           std::to_string(all.size()) + " exercises";
   }
-  const std::string view = params_.at("view").choice();
-  params_.resetToDefaults();
-  exercise_ = {};
-  options_.exercise = n;
+  Params& params = runner_.params_;
+  const std::string view = params.at("view").choice();
+  params.resetToDefaults();
+  chosen_.reset();
+  verdict_ = {};
+  judged_at_ = -1;
+  runner_.options_.exercise = n;
   std::string problem;
   if (n > 0) {
-    exercise_.chosen = std::move(all[static_cast<size_t>(n - 1)]);
-    problem = applySets(exercise_.chosen->setup);
+    chosen_ = std::move(all[static_cast<size_t>(n - 1)]);
+    problem = runner_.applySets(chosen_->setup);
   }
-  params_.setChoice(params_.at("view"), view);  // the student's view stays
-  lockExerciseWidgets();
+  params.setChoice(params.at("view"), view);  // the student's view stays
+  lockWidgets();
   // Judged on the grader's picture size (a page fits its canvas so too: page_main.cpp).
-  if (n > 0 && !options_.size_given) {
-    fitWindow(kExerciseWidth + (options_.hide_panel ? 0 : static_cast<int>(kPanelColumn)),
-              kExerciseHeight);
+  if (n > 0 && !runner_.options_.size_given) {
+    const RunOptions& o = runner_.options_;
+    runner_.window_.fit(
+        Runner::kExerciseWidth + (o.hide_panel ? 0 : static_cast<int>(RunnerWindow::kPanelColumn)),
+        Runner::kExerciseHeight);
   }
   return problem;
 }
 
-void Runner::lockExerciseWidgets() {
-  if (!exercise_.chosen) {
-    params_.lockWidgets(nullptr);
+void ExerciseRun::lockWidgets() {
+  if (!chosen_) {
+    runner_.params_.lockWidgets(nullptr);
     return;
   }
-  const Exercise ex = *exercise_.chosen;
-  const std::string why = "exercise " + std::to_string(options_.exercise) + " (" + ex.title +
-                          ") does not let you move this";
-  params_.lockWidgets([ex, why](const Param& p) { return allowedIn(ex, p.name) ? "" : why; });
+  const Exercise ex = *chosen_;
+  const std::string why = "exercise " + std::to_string(runner_.options_.exercise) + " (" +
+                          ex.title + ") does not let you move this";
+  runner_.params_.lockWidgets(
+      [ex, why](const Param& p) { return allowedIn(ex, p.name) ? "" : why; });
 }
 
 // What a student changed, as name=value lines: with an exercise, what it lets them move.
-std::vector<std::string> Runner::changedSettings() const {
+std::vector<std::string> ExerciseRun::changedSettings() const {
   std::vector<std::string> lines;
-  for (const Param& p : params_.all()) {
+  for (const Param& p : runner_.params_.all()) {
     if (p.name == "view") continue;
-    if (exercise_.chosen && !allowedIn(*exercise_.chosen, p.name)) continue;
+    if (chosen_ && !allowedIn(*chosen_, p.name)) continue;
     const bool same =
         p.kind == ParamKind::String
             ? p.string_value == p.string_fallback
@@ -98,12 +112,14 @@ std::vector<std::string> Runner::changedSettings() const {
   return lines;
 }
 
-std::string Runner::saveSettings(const std::string& path) const {
+std::string ExerciseRun::save(const std::string& path) const {
+  const std::string& name = runner_.name_;
+  const int n = runner_.options_.exercise;
   std::ofstream out(path);
-  out << "# " << name_ << " settings: " << name_ << " --settings " << path;
-  if (exercise_.chosen) {
-    out << "\n# exercise " << options_.exercise << ": " << exercise_.chosen->title
-        << "\n# grade it: " << name_ << " --grade " << options_.exercise << " --settings " << path;
+  out << "# " << name << " settings: " << name << " --settings " << path;
+  if (chosen_) {
+    out << "\n# exercise " << n << ": " << chosen_->title << "\n# grade it: " << name << " --grade "
+        << n << " --settings " << path;
   }
   out << "\n";
   for (const std::string& line : changedSettings()) out << line << "\n";
@@ -111,40 +127,44 @@ std::string Runner::saveSettings(const std::string& path) const {
   return out ? "" : "cannot write " + path;
 }
 
-std::string Runner::settingsQuery() const {
+std::string ExerciseRun::query() const {
   std::string query;
-  if (exercise_.chosen) query = "exercise=" + std::to_string(options_.exercise);
+  if (chosen_) query = "exercise=" + std::to_string(runner_.options_.exercise);
   for (const std::string& line : changedSettings()) {
     query += (query.empty() ? "" : "&") + line;
   }
   return "?" + query;
 }
 
-void Runner::judgeExercise() {
-  if (!exercise_.chosen || exercise_.judged_at == truth_.measured()) return;
+void ExerciseRun::judge() {
+  const TruthMeasure& truth = runner_.truth_;
+  if (!chosen_ || judged_at_ == truth.measured()) return;
   JsonWriter json;
-  writeReport(json);  // the verdict reads the report's own numbers
-  exercise_.verdict = evaluate(*exercise_.chosen, json);
-  exercise_.judged_at = truth_.measured();
+  runner_.writeReport(json);  // the verdict reads the report's own numbers
+  verdict_ = evaluate(*chosen_, json);
+  judged_at_ = truth.measured();
 }
 
 // --grade N: the headless run (its picture, outputs and summary line), then the verdict of
 // exercise N on its truth, one line, and the exit code: 0 met, 1 not.
-int Runner::runGrade() {
-  if (const int code = runHeadless(); code != 0) return code;
-  if (!truth_.error().valid) {
-    std::printf("%s exercise %d: no verdict: %s\n", name_.c_str(), options_.exercise,
-                haveTruth() ? "the truth was not measured" : truthUnavailable().c_str());
+int ExerciseRun::grade() {
+  if (const int code = runner_.runHeadless(); code != 0) return code;
+  const std::string& name = runner_.name_;
+  const int n = runner_.options_.exercise;
+  if (!runner_.truth_.error().valid) {
+    std::printf(
+        "%s exercise %d: no verdict: %s\n", name.c_str(), n,
+        Runner::haveTruth() ? "the truth was not measured" : Runner::truthUnavailable().c_str());
     return 1;
   }
   // On the numbers of the last frame, as the report written just before has them.
   JsonWriter json;
-  writeReport(json);
-  const Verdict v = evaluate(*exercise_.chosen, json);
+  runner_.writeReport(json);
+  const Verdict v = evaluate(*chosen_, json);
   std::string figures;
   for (const FigureResult& f : v.figures) figures += (figures.empty() ? "" : "; ") + f.line();
-  std::printf("%s exercise %d (%s): %s: %s\n", name_.c_str(), options_.exercise,
-              exercise_.chosen->title.c_str(), v.met ? "MET" : "NOT MET", figures.c_str());
+  std::printf("%s exercise %d (%s): %s: %s\n", name.c_str(), n, chosen_->title.c_str(),
+              v.met ? "MET" : "NOT MET", figures.c_str());
   return v.met ? 0 : 1;
 }
 

@@ -34,9 +34,9 @@ void Runner::writeReport(JsonWriter& json) {
   json.value("renderer", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
   json.value("flavour", caps().flavour);  // the API this build speaks: gl45, gl41 or gles30
   json.value("vendor", reinterpret_cast<const char*>(glGetString(GL_VENDOR)));
-  json.value("backend", window_.open ? std::string("window") : HeadlessContext::current());
+  json.value("backend", window_.is_open ? std::string("window") : HeadlessContext::current());
   // Which EGL device rendered it (--backend egl-device), of how many there were.
-  if (const EglDeviceChoice device = currentEglDevice(); device.index >= 0 && !window_.open) {
+  if (const EglDeviceChoice device = currentEglDevice(); device.index >= 0 && !window_.is_open) {
     json.beginObject("device");
     json.value("index", device.index);
     json.value("name", device.name);
@@ -134,8 +134,8 @@ void Runner::writeReport(JsonWriter& json) {
   }
   lesson_->reportPixels(json, {options_.width, options_.height, measureTexels()});
   // The exercise's verdict on these very numbers (lesson/exercise.hpp), last: it reads them.
-  if (exercise_.chosen && truth_.error().valid) {
-    const Exercise& ex = *exercise_.chosen;
+  if (exercise_.chosen() && truth_.error().valid) {
+    const Exercise& ex = *exercise_.chosen();
     const Verdict v = evaluate(ex, json);
     json.beginObject("exercise");
     json.value("number", options_.exercise);
@@ -154,7 +154,7 @@ void Runner::writeReport(JsonWriter& json) {
 
 void Runner::saveScreenshot(int width, int height, const std::string& file) {
   Image image{width, height, std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 4)};
-  glBindFramebuffer(GL_FRAMEBUFFER, window_.open ? 0 : gpu_->target->id());
+  glBindFramebuffer(GL_FRAMEBUFFER, window_.is_open ? 0 : gpu_->target->id());
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
   const std::string path =
@@ -177,7 +177,7 @@ int Runner::run() {
     }
   }
   try {
-    return options_.grade ? runGrade() : runHeadlessOrWindow();
+    return options_.grade ? exercise_.grade() : runHeadlessOrWindow();
   } catch (const TruthMismatch& e) {
     std::fprintf(stderr, "%s: %s\n", name_.c_str(), printable(e.what()).c_str());
     return 2;
@@ -191,8 +191,8 @@ int Runner::runHeadlessOrWindow() {
     if (!options_.headless) std::printf("%s: no display, rendering headless\n", name_.c_str());
     return runHeadless();
   }
-  const int result = runWindow();
-  if (result != kNoWindow) return result;
+  const int result = window_.run();
+  if (result != RunnerWindow::kNoWindow) return result;
   const std::string why = printable(window_.error.empty() ? "unknown reason" : window_.error);
   if (options_.force_window) {
     std::fprintf(stderr, "%s: cannot open a window (%s)\n", name_.c_str(), why.c_str());

@@ -66,8 +66,8 @@ std::string Runner::truthUnavailable() {
   return "";
 }
 
-bool Runner::panelDue(int width, int height) {
-  Gpu& g = *gpu_;
+bool RunnerWindow::panelDue(int width, int height) {
+  Runner::Gpu& g = *r_.gpu_;
   glm::dvec2 cursor;
   glfwGetCursorPos(g.window, &cursor.x, &cursor.y);
   bool down = false;
@@ -86,8 +86,8 @@ bool Runner::panelDue(int width, int height) {
   return due;
 }
 
-void Runner::drawPanelTexture(int width, int height) {
-  Gpu& g = *gpu_;
+void RunnerWindow::drawPanelTexture(int width, int height) {
+  Runner::Gpu& g = *r_.gpu_;
   if (g.panel_color.width() != width || g.panel_color.height() != height) {
     g.panel_color = Texture::color(width, height, GL_RGBA8);
     g.panel_target = std::make_unique<Framebuffer>();
@@ -126,8 +126,8 @@ void Runner::drawPanelTexture(int width, int height) {
   ++g.panel_draws;
 }
 
-void Runner::laySavedPanel(const Frame& frame) {
-  const Gpu& g = *gpu_;
+void RunnerWindow::laySavedPanel(const Frame& frame) {
+  const Runner::Gpu& g = *r_.gpu_;
   if (g.panel_box.z == 0) return;
   // Over the whole framebuffer, the panel's column beside the picture included.
   glBindFramebuffer(GL_FRAMEBUFFER, frame.target);
@@ -189,8 +189,8 @@ void Runner::drawPanel(Frame& frame) {
   if (column) {
     // A window's panel is a column of its own right of the picture, never over it.
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(display.x - kPanelColumn, 0), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(kPanelColumn, display.y), ImGuiCond_Always);
+    ImGui::SetNextWindowPos(ImVec2(display.x - RunnerWindow::kPanelColumn, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(RunnerWindow::kPanelColumn, display.y), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(1.0f);
   } else {
     // Over the picture (headless --panel, a window too narrow for a column): narrow, in the
@@ -232,13 +232,13 @@ void Runner::drawPanel(Frame& frame) {
     if (ImGui::BeginCombo("exercise", names[static_cast<size_t>(shown)].c_str())) {
       for (int k = 0; k < static_cast<int>(names.size()); ++k) {
         if (ImGui::Selectable(names[static_cast<size_t>(k)].c_str(), k == shown) && k != shown) {
-          chooseExercise(k);
+          exercise_.choose(k);
         }
       }
       ImGui::EndCombo();
     }
   }
-  if (const Exercise* ex = exercise()) {
+  if (const Exercise* ex = exercise_.chosen()) {
     ImGui::Separator();
     ImGui::TextWrapped("Exercise %d: %s", options_.exercise, ex->title.c_str());
     ImGui::TextWrapped("%s", ex->goal.c_str());
@@ -256,8 +256,8 @@ void Runner::drawPanel(Frame& frame) {
     const ImVec4 met_colour{0.4f, 1.0f, 0.4f, 1.0f}, unmet_colour{1.0f, 0.45f, 0.4f, 1.0f};
     wrapped(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled),
             "move: " + allowed + (ex->camera_free ? ", the camera" : " (the camera stays)"));
-    const Verdict& v = exercise_.verdict;
-    if (exercise_.judged_at < 0) {
+    const Verdict& v = exercise_.verdict();
+    if (!exercise_.judged()) {
       ImGui::TextDisabled("measuring...");
     } else {
       for (const FigureResult& f : v.figures) wrapped(f.met ? met_colour : unmet_colour, f.line());
@@ -274,7 +274,7 @@ void Runner::drawPanel(Frame& frame) {
     if (ImGui::Button("Save settings")) {
       const std::string file =
           name_ + "_exercise" + std::to_string(options_.exercise) + "_settings.txt";
-      const std::string problem = saveSettings(file);
+      const std::string problem = exercise_.save(file);
       window_.saved = problem.empty()
                           ? "saved " + file + ": hand it in, or grade it: " + name_ + " --grade " +
                                 std::to_string(options_.exercise) + " --settings " + file
@@ -283,7 +283,7 @@ void Runner::drawPanel(Frame& frame) {
     if (!window_.saved.empty()) ImGui::TextWrapped("%s", window_.saved.c_str());
 #else
     // A page's submission is its address: these settings as a link.
-    ImGui::TextWrapped("as a link: %s", settingsQuery().c_str());
+    ImGui::TextWrapped("as a link: %s", exercise_.query().c_str());
 #endif
   }
   // Where no technique's answer is defined, the panel says so before its numbers.
@@ -358,7 +358,7 @@ void Runner::drawPanel(Frame& frame) {
   }
   if (haveTruth() && options_.truth &&
       ImGui::CollapsingHeader("Error", ImGuiTreeNodeFlags_DefaultOpen)) {
-    if (errorMeasureRunning() && errorMeasureProgress() >= 0.0) {
+    if (truth_.running() && errorMeasureProgress() >= 0.0) {
       // A page's worker takes seconds; natively the truth is there before this shows.
       ImGui::TextDisabled("tracing the truth: %.0f%%", 100.0 * errorMeasureProgress());
     }

@@ -63,19 +63,14 @@ Runner::Runner(const std::string& lessonName, std::unique_ptr<Lesson> lesson, Ru
                     "what to show: shaded, the shadow term alone, debug views, the ray-traced "
                     "truth, or the error against it");
   lesson_->declare(params_);
-  if (options_.exercise > 0) {
-    std::vector<Exercise> all = lesson_->exercises();
-    if (options_.exercise <= static_cast<int>(all.size())) {
-      exercise_.chosen = std::move(all[static_cast<size_t>(options_.exercise - 1)]);
-    }
-  }
+  exercise_.pick(options_.exercise);
   declareShared();
   loadScene();
 }
 
 Runner::~Runner() {
   releaseGl();
-  if (window_.open) glfwTerminate();
+  if (window_.is_open) glfwTerminate();
 }
 
 void Runner::declareShared() {
@@ -260,10 +255,10 @@ int Runner::glErrors() const {
 }
 
 void Runner::renderFrame(bool timed) {
-  const GLuint target = window_.open ? 0 : gpu_->target->id();
+  const GLuint target = window_.is_open ? 0 : gpu_->target->id();
   int w = options_.width, h = options_.height;
-  if (window_.open) glfwGetFramebufferSize(gpu_->window, &w, &h);
-  const bool panel = gpu_->imgui && (window_.open || options_.panel);
+  if (window_.is_open) glfwGetFramebufferSize(gpu_->window, &w, &h);
+  const bool panel = gpu_->imgui && (window_.is_open || options_.panel);
   renderInto(target, w, h, params_.at("view").choice(), timed, panel);
   GlErrorLog::poll();
 }
@@ -273,7 +268,7 @@ void Runner::renderBaselineFrame() {
   const std::string view = params_.at("view").choice();
   if (off == nullptr || off->b() || view == "truth" || view == "error") return;
   int w = options_.width, h = options_.height;
-  if (window_.open) glfwGetFramebufferSize(gpu_->window, &w, &h);
+  if (window_.is_open) glfwGetFramebufferSize(gpu_->window, &w, &h);
   gpu_->ensureTargets(w, h);
   // What the lesson's frame told the runner, and what it has still to do (a dirty map must
   // still be rendered by the next real frame), survive the baseline frame, exception or not.
@@ -296,7 +291,7 @@ void Runner::renderBaselineFrame() {
   off->value[0] = 1.0;  // not through Params::set: nothing is dirtied
   // The first one compiles the unshadowed variants: not timed. The panel, if shown, is laid
   // over it as over the lesson's frames (never drawn anew: it takes no input here).
-  const bool panel = gpu_->imgui && (window_.open ? !options_.hide_panel : options_.panel);
+  const bool panel = gpu_->imgui && (window_.is_open ? !options_.hide_panel : options_.panel);
   renderInto(gpu_->target->id(), w, h, view, /*timed=*/baseline_.frames++ > 0, panel);
 }
 
@@ -330,13 +325,15 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
   // quarter second for its numbers) and laid over the other frames from a texture: ImGui's
   // thousands of blended triangles cost a CPU rasterizer as much as some lessons' shadows.
   // A window's panel is drawn over its whole framebuffer (a column right of the picture).
-  const glm::ivec2 panel_size =
-      window_.open && window_.framebuffer.x > 0 ? window_.framebuffer : glm::ivec2(width, height);
+  const glm::ivec2 panel_size = window_.is_open && window_.framebuffer.x > 0
+                                    ? window_.framebuffer
+                                    : glm::ivec2(width, height);
   const bool draw_panel =
-      withPanel && (!window_.open || (!baseline_.running && panelDue(panel_size.x, panel_size.y)));
+      withPanel &&
+      (!window_.is_open || (!baseline_.running && window_.panelDue(panel_size.x, panel_size.y)));
   if (draw_panel) {
     ImGuiIO& io = ImGui::GetIO();
-    if (!window_.open) {
+    if (!window_.is_open) {
       io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
       io.DeltaTime = 1.0f / 60.0f;
       io.MousePos = ImVec2(window_.mouse.x, window_.mouse.y);
@@ -388,12 +385,12 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
       drawTexels(frame, texel_mode == "aliasing");
     }
   }
-  if (withPanel && !window_.open) {
+  if (withPanel && !window_.is_open) {
     frame.bindTarget();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   } else if (withPanel) {
-    if (draw_panel) drawPanelTexture(panel_size.x, panel_size.y);
-    laySavedPanel(frame);
+    if (draw_panel) window_.drawPanelTexture(panel_size.x, panel_size.y);
+    window_.laySavedPanel(frame);
   }
   measure_->endFrame();
   measure_->setEnabled(true);

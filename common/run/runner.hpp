@@ -12,7 +12,9 @@
 
 #include "core/image.hpp"
 #include "lesson/lesson.hpp"
+#include "run/exercise_run.hpp"
 #include "run/truth_measure.hpp"
+#include "run/window.hpp"
 
 namespace shadows {
 
@@ -71,19 +73,11 @@ class Runner final : public LessonHost {
   std::string costSummary() const;
   // The last frame's work counters, one line: "name N, ..., name unavailable on gles30".
   std::string counterSummary() const;
-  // The next window frame is saved as a screenshot (what the F12 key does).
-  void requestScreenshot() { window_.screenshot_requested = true; }
   // Why the truth and error views show no picture ("" when the build has the truth).
   static std::string truthUnavailable();
-  // The panel's width as a column beside the picture, in window units (a window is the frame
-  // plus this wide while the panel shows).
-  static constexpr float kPanelColumn = 340.0f;
   // The picture an exercise is judged on, everywhere: --grade, a window or a page with an
   // exercise chosen (fragment counts and texels per pixel depend on the picture's size).
   static constexpr int kExerciseWidth = 640, kExerciseHeight = 480;
-  // Keeps one of the panel's folded sections open ("Light and camera"): a test or a
-  // tutorial script aims at a widget there.
-  void openPanelSection(const std::string& title) { window_.open_sections.insert(title); }
   // Feeds ImGui a mouse state for the next frame (headless tests drive the panel this way).
   void setMouse(glm::vec2 position, bool leftDown);
   // Whether input is moving (the window sets it each frame; tests may too): Frame::input_moving.
@@ -95,16 +89,14 @@ class Runner final : public LessonHost {
   // there (true then). One job at a time; measureError() waits for a running one.
   void beginErrorMeasure();
   bool pollErrorMeasure();
-  bool errorMeasureRunning() const { return truth_.running(); }
   // The running measure's progress in [0, 1], or -1 when not known (natively) or none runs.
   double errorMeasureProgress() const;
   // Whether the truth and error views can show anything: the build has a tracer, and a page
   // loaded its own (truthUnavailable() says why not).
   static bool haveTruth();
-  // How many truths have been installed so far (a page's tests wait on it).
-  long long truthsMeasured() const { return truth_.measured(); }
-  // Whether a page's workers failed to trace the current settings (the console says why).
-  bool truthFailed() const { return truth_.failed(); }
+  // The truth and its error as last measured: running(), measured() (how many so far: a page's
+  // tests wait on it), failed() (a page's workers could not trace the current settings).
+  const TruthMeasure& truth() const { return truth_; }
   const ErrorState& lastError() const override { return truth_.error(); }
   Image readImage() const;
   std::vector<float> renderVisibility();
@@ -124,36 +116,18 @@ class Runner final : public LessonHost {
   int glErrors() const;
   void writeReport(JsonWriter& json);
 
-  // The exercise --exercise or --grade chose (null: none), and its verdict on the last truth.
-  const Exercise* exercise() const { return exercise_.chosen ? &*exercise_.chosen : nullptr; }
-  const Verdict& exerciseVerdict() const { return exercise_.verdict; }
-  // "" or why the command line's exercise cannot run: no such exercise, or (grading) a --set
-  // of a parameter it does not let a student move.
-  std::string exerciseProblem() const;
-  // Chooses exercise n (0: none) in a running lesson, as the panel's selector does: every
-  // parameter back to its default, the exercise's own settings, the sliders it does not let a
-  // student move locked. Returns "" or why not (no such exercise).
-  std::string chooseExercise(int n);
-  // The settings a student changed, one name=value a line (--settings reads them back): with
-  // an exercise, only those it lets a student move. Returns "" or why it could not write.
-  std::string saveSettings(const std::string& path) const;
-  // The same as a page's query (?a=b&c=d), for a link.
-  std::string settingsQuery() const;
+  // The exercise --exercise, --grade or the panel chose, its verdict, the student's settings.
+  ExerciseRun& exercises() { return exercise_; }
+  const ExerciseRun& exercises() const { return exercise_; }
   // The exercise's own settings, then the command line's --set list: what a run starts from
-  // ("" or the first problem, exerciseProblem()'s included).
+  // ("" or the first problem, the exercise's included).
   std::string applyStartingSettings();
   // "" or one line on parameters that parse alone but not together (near >= far).
   std::string checkConsistency() const;
   // Runs the whole program (window or headless) and returns the exit code.
   int run();
-  // The window loop in steps, for a browser that calls one frame at a time
-  // (emscripten_set_main_loop): open (false: no window, see run()), then frames while
-  // windowFrame() says true, then close, which returns the exit code.
-  bool openWindow();
-  bool windowFrame();
-  // Resizes the window (a page's canvas, to fill the browser's window): picture and column.
-  void fitWindow(int width, int height);
-  int closeWindow();
+  // The window: its loop in steps (a page's), the panel's column, a test's panel sections.
+  RunnerWindow& window() { return window_; }
 
   // LessonHost: what a lesson may ask (lesson/lesson.hpp says what each does).
   void setObjectModel(size_t index, const glm::mat4& model) override;
@@ -170,10 +144,6 @@ class Runner final : public LessonHost {
   void drawFullscreen(const Frame& frame, const Program& program, bool inset) const override;
   // The aliasing view's colour bar, in the panel while that view shows (panel.cpp).
   void drawTexelLegend() const;
-  // The window's panel cache (panel.cpp).
-  bool panelDue(int width, int height);
-  void drawPanelTexture(int width, int height);
-  void laySavedPanel(const Frame& frame);
 
   struct Gpu;
   void declareShared();
@@ -198,8 +168,6 @@ class Runner final : public LessonHost {
   // The eye's matrices from camera.*: one definition for the lesson and the truth's pass.
   glm::mat4 cameraView() const;
   glm::mat4 cameraProjection(int width, int height) const;
-  static constexpr int kNoWindow = -1;  // runWindow could not open one (window_.error: why)
-  int runWindow();
   int runHeadless();
 
   std::string name_;
@@ -239,32 +207,11 @@ class Runner final : public LessonHost {
   void drawTexels(const Frame& frame, bool heatmap);
   TruthMeasure truth_;
   int runHeadlessOrWindow();
-  int runGrade();
-  struct ExerciseState {
-    std::optional<Exercise> chosen;
-    Verdict verdict;
-    long long judged_at = -1;  // truthsMeasured() when the verdict was made
-  } exercise_;
-  void judgeExercise();        // after a truth is installed: the verdict on it
-  void lockExerciseWidgets();  // the panel's sliders the exercise does not allow, locked
-  std::vector<std::string> changedSettings() const;  // saveSettings' lines
+  friend class ExerciseRun;
+  ExerciseRun exercise_{*this};
   TruthInputs gatherTruthInputs();  // render thread: what traceTruth needs of the GPU
-  struct WindowState {
-    bool open = false;
-    std::string error;  // why none opened, as GLFW said it
-    bool screenshot_requested = false;
-    int screenshots_taken = 0;
-    glm::vec2 mouse{-1.0f};  // setMouse: a headless test's mouse
-    bool mouse_down = false;
-    // The panel's column right of the picture, in framebuffer pixels (0: over the picture, or
-    // hidden), and the whole framebuffer the panel is drawn into.
-    int column = 0;
-    glm::ivec2 framebuffer{0};
-    std::set<std::string> open_sections;  // openPanelSection
-    std::string saved;                    // the panel's "Save settings": where, or why not
-  } window_;
-  // The window's frame: the framebuffer less the panel's column where it fits one.
-  int columnFor(int framebufferWidth) const;
+  friend class RunnerWindow;
+  RunnerWindow window_{*this};
 };
 
 // main() of every lesson binary: parse, run, exit code (0 ok, 1 runtime failure, 2 bad input).

@@ -38,7 +38,7 @@ struct Runner::Gpu {
   Program texel_heatmap, texel_raw;  // texel_density.frag, the aliasing view and its numbers
   Texture shown;                     // the error or truth image, uploaded for display
   // The window's panel: drawn into its own texture only when it may have changed, laid over
-  // every frame (Runner::panelDue, drawPanelTexture, laySavedPanel).
+  // every frame (RunnerWindow::panelDue, drawPanelTexture, laySavedPanel).
   Texture panel_color;
   std::unique_ptr<Framebuffer> panel_target;
   Program panel_over;
@@ -52,7 +52,7 @@ struct Runner::Gpu {
   bool imgui = false;
   bool imgui_glfw = false;
   GLFWwindow* window = nullptr;
-  // The window loop's state between frames (Runner::windowFrame): the orbit drag, the H key,
+  // The window loop's state between frames (RunnerWindow::frame): the orbit drag, the H key,
   // when the sliders last moved, the frames a scripted run has left.
   struct WindowLoop {
     double last_x = 0, last_y = 0;

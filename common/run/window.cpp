@@ -24,18 +24,18 @@
 
 namespace shadows {
 
-int Runner::runWindow() {
-  if (!openWindow()) return kNoWindow;
-  while (windowFrame()) {
+int RunnerWindow::run() {
+  if (!begin()) return kNoWindow;
+  while (frame()) {
   }
-  return closeWindow();
+  return end();
 }
 
-bool Runner::openWindow() {
+bool RunnerWindow::begin() {
   // Until a window is open, GLFW's complaint is kept for the one line run() prints about it;
   // after that, it is printed as it comes.
-  static std::string* opening_error = &window_.error;
-  opening_error = &window_.error;
+  static std::string* opening_error = &error;
+  opening_error = &error;
   glfwSetErrorCallback([](int, const char* description) {
     if (opening_error != nullptr) {
       *opening_error = description;
@@ -47,25 +47,25 @@ bool Runner::openWindow() {
     opening_error = nullptr;  // later errors (a headless fallback's) are printed, not kept
     return false;
   }
-  window_.open = true;
+  is_open = true;
   setGlfwContextHints();
   // --size is the picture; the panel's column comes beside it. Without --size a window is
   // 1280x720 (a laptop's screen, less the desktop's bars), larger than a headless picture.
-  int width = options_.width, height = options_.height;
+  int width = r_.options_.width, height = r_.options_.height;
 #ifndef __EMSCRIPTEN__  // a page fits its window (page_main.cpp)
-  if (!options_.size_given) {
+  if (!r_.options_.size_given) {
     width = 1280 - static_cast<int>(kPanelColumn), height = 720;
   }
 #endif
-  if (options_.exercise > 0 && !options_.size_given)
-    width = kExerciseWidth, height = kExerciseHeight;
-  if (!options_.hide_panel) width += static_cast<int>(kPanelColumn);
-  GLFWwindow* window =
-      glfwCreateWindow(width, height, (name_ + ": " + lesson_->title()).c_str(), nullptr, nullptr);
+  if (r_.options_.exercise > 0 && !r_.options_.size_given)
+    width = Runner::kExerciseWidth, height = Runner::kExerciseHeight;
+  if (!r_.options_.hide_panel) width += static_cast<int>(kPanelColumn);
+  GLFWwindow* window = glfwCreateWindow(
+      width, height, (r_.name_ + ": " + r_.lesson_->title()).c_str(), nullptr, nullptr);
   if (window == nullptr) {
-    if (window_.error.empty()) window_.error = std::string("no ") + (contextName() + 2);
+    if (error.empty()) error = std::string("no ") + (contextName() + 2);
     glfwTerminate();
-    window_.open = false;
+    is_open = false;
     opening_error = nullptr;
     return false;
   }
@@ -75,16 +75,16 @@ bool Runner::openWindow() {
   glfwSwapInterval(1);
 #endif
   if (!loadGl(glfwGetProcAddress)) throw GlFailure("glad could not load GL");
-  gpu_ = std::make_unique<Gpu>();
-  gpu_->window = window;
-  initGl();
+  r_.gpu_ = std::make_unique<Runner::Gpu>();
+  r_.gpu_->window = window;
+  r_.initGl();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
   // Any input since the panel was last drawn asks for it anew (panelDue): these callbacks run
   // first, then ImGui's, which it chains to them.
-  glfwSetWindowUserPointer(window, gpu_.get());
+  glfwSetWindowUserPointer(window, r_.gpu_.get());
   static constexpr auto input = [](GLFWwindow* w) {
-    static_cast<Gpu*>(glfwGetWindowUserPointer(w))->panel_input = true;
+    static_cast<Runner::Gpu*>(glfwGetWindowUserPointer(w))->panel_input = true;
   };
   glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int, int, int) { input(w); });
   glfwSetScrollCallback(window, [](GLFWwindow* w, double, double) { input(w); });
@@ -105,23 +105,23 @@ bool Runner::openWindow() {
     ImGui::GetIO().Fonts->AddFontDefault(&font);
     ImGui::GetIO().FontGlobalScale = 1.0f / scale;
   }
-  initImGuiGl();
-  gpu_->imgui_glfw = true;
+  r_.initImGuiGl();
+  r_.gpu_->imgui_glfw = true;
 
   // With an output or --frames, a windowed run renders --frames frames, writes what was asked
   // for and exits: that is how the tests check the real window path under xvfb.
-  const bool scripted = options_.frames_given || !options_.out.empty() ||
-                        !options_.report.empty() || !options_.truth_out.empty() ||
-                        !options_.error_out.empty() || !options_.truth_job.empty() ||
-                        !options_.truth_result.empty();
-  gpu_->loop.frames_left = scripted ? options_.frames + 1 : -1;
-  gpu_->loop.changed_at = std::chrono::steady_clock::now();
+  const bool scripted = r_.options_.frames_given || !r_.options_.out.empty() ||
+                        !r_.options_.report.empty() || !r_.options_.truth_out.empty() ||
+                        !r_.options_.error_out.empty() || !r_.options_.truth_job.empty() ||
+                        !r_.options_.truth_result.empty();
+  r_.gpu_->loop.frames_left = scripted ? r_.options_.frames + 1 : -1;
+  r_.gpu_->loop.changed_at = std::chrono::steady_clock::now();
   return true;
 }
 
-bool Runner::windowFrame() {
-  GLFWwindow* window = gpu_->window;
-  Gpu::WindowLoop& loop = gpu_->loop;
+bool RunnerWindow::frame() {
+  GLFWwindow* window = r_.gpu_->window;
+  Runner::Gpu::WindowLoop& loop = r_.gpu_->loop;
   if (glfwWindowShouldClose(window) || loop.frames_left == 0) return false;
   {
     auto& [last_x, last_y, h_was_down, dragging, changed_at, moved_at, last_key, frames_left,
@@ -132,12 +132,13 @@ bool Runner::windowFrame() {
     double x = 0, y = 0;
     glfwGetCursorPos(window, &x, &y);
     // An exercise that does not let the student move the camera does not let the mouse either.
-    const bool camera_locked = exercise() != nullptr && !exercise()->camera_free;
+    const Exercise* ex = r_.exercise_.chosen();
+    const bool camera_locked = ex != nullptr && !ex->camera_free;
     const bool down = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
     if (down && !io.WantCaptureMouse && !camera_locked) {
       if (dragging) {
-        Param& pos = params_.at("camera.pos");
-        const glm::vec3 target = params_.at("camera.target").v();
+        Param& pos = r_.params_.at("camera.pos");
+        const glm::vec3 target = r_.params_.at("camera.target").v();
         glm::vec3 offset = pos.v() - target;
         const float radius = glm::length(offset);
         float yaw = std::atan2(offset.x, offset.z) - 0.01f * static_cast<float>(x - last_x);
@@ -146,46 +147,47 @@ bool Runner::windowFrame() {
         pitch = std::clamp(pitch, -1.5f, 1.5f);
         offset = radius * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
                                     std::cos(pitch) * std::cos(yaw));
-        params_.setVec3(pos, target + offset);
+        r_.params_.setVec3(pos, target + offset);
       }
       dragging = true;
     } else {
       dragging = false;
     }
     last_x = x, last_y = y;
-    if (options_.orbit > 0) {  // a scripted drag: the same turn, without a mouse
-      Param& pos = params_.at("camera.pos");
-      const glm::vec3 target = params_.at("camera.target").v();
+    if (r_.options_.orbit > 0) {  // a scripted drag: the same turn, without a mouse
+      Param& pos = r_.params_.at("camera.pos");
+      const glm::vec3 target = r_.params_.at("camera.target").v();
       const glm::vec3 offset = pos.v() - target;
-      params_.setVec3(
-          pos, target + glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(float(options_.orbit)),
-                                              glm::vec3(0.0f, 1.0f, 0.0f)) *
-                                  glm::vec4(offset, 0.0f)));
+      r_.params_.setVec3(pos, target + glm::vec3(glm::rotate(glm::mat4(1.0f),
+                                                             glm::radians(float(r_.options_.orbit)),
+                                                             glm::vec3(0.0f, 1.0f, 0.0f)) *
+                                                 glm::vec4(offset, 0.0f)));
     }
     if (io.MouseWheel != 0.0f && !io.WantCaptureMouse && !camera_locked) {
-      Param& pos = params_.at("camera.pos");
-      const glm::vec3 target = params_.at("camera.target").v();
-      params_.setVec3(pos, target + (pos.v() - target) * std::pow(0.9f, io.MouseWheel));
+      Param& pos = r_.params_.at("camera.pos");
+      const glm::vec3 target = r_.params_.at("camera.target").v();
+      r_.params_.setVec3(pos, target + (pos.v() - target) * std::pow(0.9f, io.MouseWheel));
     }
-    if (glfwGetKey(window, GLFW_KEY_F12) == GLFW_PRESS) window_.screenshot_requested = true;
+    if (glfwGetKey(window, GLFW_KEY_F12) == GLFW_PRESS) screenshot_requested = true;
     // H hides or shows the panel (on the key's press, not while it is held).
     const bool h_down = glfwGetKey(window, GLFW_KEY_H) == GLFW_PRESS;
-    if (h_down && !h_was_down && !io.WantTextInput) options_.hide_panel = !options_.hide_panel;
+    if (h_down && !h_was_down && !io.WantTextInput)
+      r_.options_.hide_panel = !r_.options_.hide_panel;
     h_was_down = h_down;
 
     int window_w = 0, h = 0;
     glfwGetFramebufferSize(window, &window_w, &h);
-    window_.column = columnFor(window_w);
-    window_.framebuffer = {window_w, h};
-    const int w = window_w - window_.column;  // the picture, left of the panel's column
+    column = columnFor(window_w);
+    framebuffer = {window_w, h};
+    const int w = window_w - column;  // the picture, left of the panel's column
     if (w > 0 && h > 0) {
-      options_.width = w, options_.height = h;
-      gpu_->ensureTargets(w, h);
+      r_.options_.width = w, r_.options_.height = h;
+      r_.gpu_->ensureTargets(w, h);
       // The truth is re-measured once the sliders rest. Its rays (a few hundred ms) are traced
       // on a worker thread while frames go on; only the read-back of what it needs (the
       // visibility, shaded and geometry passes) takes the render thread.
-      pollErrorMeasure();
-      const std::string key = errorKey();
+      r_.pollErrorMeasure();
+      const std::string key = r_.errorKey();
       const auto now = std::chrono::steady_clock::now();
       // Input moves while the key changes (the first frame's key is no move) or a widget is
       // held; a lesson may draw a cheaper picture then (Frame::input_moving).
@@ -194,24 +196,24 @@ bool Runner::windowFrame() {
         changed_at = now, last_key = key;
       }
       const bool resting = now - changed_at > std::chrono::milliseconds(300);
-      setInputMoving(ImGui::IsAnyItemActive() ||
-                     (moved_at && now - *moved_at <= std::chrono::milliseconds(300)));
-      if (options_.truth && resting && key != truth_.key() && !errorMeasureRunning() &&
+      r_.setInputMoving(ImGui::IsAnyItemActive() ||
+                        (moved_at && now - *moved_at <= std::chrono::milliseconds(300)));
+      if (r_.options_.truth && resting && key != r_.truth_.key() && !r_.truth_.running() &&
           !ImGui::IsAnyItemActive()) {
-        beginErrorMeasure();
+        r_.beginErrorMeasure();
       }
       // The panel's "shadow: N x the frame without it": one frame in 32 is rendered again,
       // off-screen, with shadow.off.
-      renderInto(0, w, h, params_.at("view").choice(), true, !options_.hide_panel);
+      r_.renderInto(0, w, h, r_.params_.at("view").choice(), true, !r_.options_.hide_panel);
       // After the frame, so the panel's numbers (drawn first thing in a frame) are the
       // lesson's, not the baseline's.
 #ifndef __EMSCRIPTEN__  // a page cannot time it (costSummary)
-      if (!options_.hide_panel && frame_number++ % 32 == 0) renderBaselineFrame();
+      if (!r_.options_.hide_panel && frame_number++ % 32 == 0) r_.renderBaselineFrame();
 #endif
       GlErrorLog::poll();
-      if (window_.screenshot_requested) {
-        window_.screenshot_requested = false;
-        saveScreenshot(window_w, h, {});
+      if (screenshot_requested) {
+        screenshot_requested = false;
+        r_.saveScreenshot(window_w, h, {});
       }
       if (frames_left > 0 && --frames_left == 0) {
         // The same outputs as a headless run: the window as shown (the picture, and the
@@ -221,8 +223,8 @@ bool Runner::windowFrame() {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
         glReadPixels(0, 0, window_w, h, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-        if (options_.truthAsked()) measureError();
-        outputs_failed = !writeOutputs(options_.out, image);
+        if (r_.options_.truthAsked()) r_.measureError();
+        outputs_failed = !r_.writeOutputs(r_.options_.out, image);
       }
     }
     glfwSwapBuffers(window);
@@ -230,29 +232,29 @@ bool Runner::windowFrame() {
   return true;
 }
 
-int Runner::columnFor(int framebufferWidth) const {
-  if (options_.hide_panel || gpu_ == nullptr || gpu_->window == nullptr) return 0;
+int RunnerWindow::columnFor(int framebufferWidth) const {
+  if (r_.options_.hide_panel || r_.gpu_ == nullptr || r_.gpu_->window == nullptr) return 0;
   int window_width = 0, unused = 0;
-  glfwGetWindowSize(gpu_->window, &window_width, &unused);
+  glfwGetWindowSize(r_.gpu_->window, &window_width, &unused);
   const float scale = window_width > 0
                           ? static_cast<float>(framebufferWidth) / static_cast<float>(window_width)
                           : 1.0f;
-  const int column = static_cast<int>(kPanelColumn * scale);
+  const int wide = static_cast<int>(kPanelColumn * scale);
   // A window too narrow for a column and a picture of some use gets the panel over it.
-  return framebufferWidth - column >= static_cast<int>(200 * scale) ? column : 0;
+  return framebufferWidth - wide >= static_cast<int>(200 * scale) ? wide : 0;
 }
 
-void Runner::fitWindow(int width, int height) {
-  if (gpu_ == nullptr || gpu_->window == nullptr || width <= 0 || height <= 0) return;
+void RunnerWindow::fit(int width, int height) {
+  if (r_.gpu_ == nullptr || r_.gpu_->window == nullptr || width <= 0 || height <= 0) return;
   int w = 0, h = 0;
-  glfwGetWindowSize(gpu_->window, &w, &h);
-  if (w != width || h != height) glfwSetWindowSize(gpu_->window, width, height);
+  glfwGetWindowSize(r_.gpu_->window, &w, &h);
+  if (w != width || h != height) glfwSetWindowSize(r_.gpu_->window, width, height);
 }
 
-int Runner::closeWindow() {
-  GLFWwindow* window = gpu_->window;
-  const bool outputs_failed = gpu_->loop.outputs_failed;
-  releaseGl();
+int RunnerWindow::end() {
+  GLFWwindow* window = r_.gpu_->window;
+  const bool outputs_failed = r_.gpu_->loop.outputs_failed;
+  r_.releaseGl();
   glfwDestroyWindow(window);
   return GlErrorLog::count() > 0 || outputs_failed ? 1 : 0;
 }

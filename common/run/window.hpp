@@ -1,0 +1,67 @@
+// The runner's window (GLFW + ImGui): the loop in steps a browser can call one frame at a
+// time, the panel's column beside the picture and its cached texture, the orbit camera, and
+// the state the runner's frame and panel read (whether a window is open, the headless tests'
+// mouse, the screenshot asked for).
+#pragma once
+
+#include <glm/glm.hpp>
+#include <set>
+#include <string>
+
+namespace shadows {
+
+struct Frame;
+class Runner;
+
+class RunnerWindow {
+ public:
+  explicit RunnerWindow(Runner& runner) : r_(runner) {}
+
+  // The panel's width as a column beside the picture, in window units (a window is the
+  // picture plus this wide while the panel shows).
+  static constexpr float kPanelColumn = 340.0f;
+  static constexpr int kNoWindow = -1;  // run() could not open one (error: why)
+
+  // The whole loop: open, frames until closed (or --frames), close; the exit code.
+  int run();
+  // The loop in steps, for a browser that calls one frame at a time (emscripten_set_main_loop):
+  // begin (false: no window, see Runner::run()), then frames while frame() says true, then
+  // end, which returns the exit code.
+  bool begin();
+  bool frame();
+  int end();
+  // Resizes the window (a page's canvas, to fill the browser's window): picture and column.
+  void fit(int width, int height);
+  // The picture's part of a framebuffer this wide: all of it less the panel's column, where
+  // the window is wide enough for both.
+  int columnFor(int framebufferWidth) const;
+  // The next frame is saved as a screenshot (what the F12 key does).
+  void requestScreenshot() { screenshot_requested = true; }
+  // Keeps one of the panel's folded sections open ("Light and camera"): a test or a tutorial
+  // script aims at a widget there.
+  void openPanelSection(const std::string& title) { open_sections.insert(title); }
+
+  // The panel in a window is drawn anew only when it may have changed, into a texture laid
+  // over the other frames (panel.cpp).
+  bool panelDue(int width, int height);
+  void drawPanelTexture(int width, int height);
+  void laySavedPanel(const Frame& frame);
+
+  bool is_open = false;
+  std::string error;  // why none opened, as GLFW said it
+  bool screenshot_requested = false;
+  int screenshots_taken = 0;
+  glm::vec2 mouse{-1.0f};  // Runner::setMouse: a headless test's mouse
+  bool mouse_down = false;
+  // The panel's column right of the picture, in framebuffer pixels (0: over the picture, or
+  // hidden), and the whole framebuffer the panel is drawn into.
+  int column = 0;
+  glm::ivec2 framebuffer{0};
+  std::set<std::string> open_sections;  // openPanelSection
+  std::string saved;                    // the panel's "Save settings": where, or why not
+
+ private:
+  Runner& r_;
+};
+
+}  // namespace shadows
