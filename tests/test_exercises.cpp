@@ -171,8 +171,9 @@ TEST(Exercises, ASettingsFileIsGradedAsItsSetsAndABadOneIsRefused) {
     std::ofstream(dir / name) << text;
     return (dir / name).string();
   };
+  // A UTF-8 BOM and Windows line ends, as a text editor there may save it.
   const std::string good =
-      write("good.txt", "# 04_bias_offset exercise 1\n\n  bias.mode=gradient  \r\n");
+      write("good.txt", "\xEF\xBB\xBF# 04_bias_offset exercise 1\n\n  bias.mode=gradient  \r\n");
   const Result met =
       run("04_bias_offset", "--grade 1 --settings " + good + " --frames 1 --out /dev/null");
   EXPECT_EQ(met.exit_code, 0) << met.output;
@@ -188,7 +189,10 @@ TEST(Exercises, ASettingsFileIsGradedAsItsSetsAndABadOneIsRefused) {
            {write("binary.txt", std::string("\x89PNG\r\n\x1a\n", 8)),
             "binary.txt:1: not a setting"},
            {(dir / "missing.txt").string(), "missing.txt: cannot read it"},
-           {write("scene.txt", "scene=cubes\n"), "not scene"}}) {
+           {write("scene.txt", "scene=cubes\n"), "not scene"},
+           {dir.string(), "not a file"},
+           {"/dev/zero", "not a file"},
+           {write("huge.txt", std::string(2 << 20, '#')), "larger than a settings file"}}) {
     const Result r = run("04_bias_offset", "--grade 1 --settings " + file + " --out /dev/null");
     EXPECT_EQ(r.exit_code, 2) << file << "\n" << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;

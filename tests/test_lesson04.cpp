@@ -344,9 +344,13 @@ TEST(Lesson04, AnExerciseChosenInThePanelLocksWhatItDoesNotAllowAndSavesWhatTheS
   std::ifstream in(file);
   const std::string saved{std::istreambuf_iterator<char>(in), {}};
   EXPECT_NE(saved.find("\nbias.units=0\n"), std::string::npos) << saved;
+  // Every slider the exercise allows, a default too: the grader starts from the exercise's
+  // settings, where putting one back to its default may be the answer.
+  EXPECT_NE(saved.find("\nbias.mode=back_faces\n"), std::string::npos) << saved;
   EXPECT_EQ(saved.find("scene="), std::string::npos) << saved;
   EXPECT_NE(saved.find("--grade 1 --settings"), std::string::npos) << saved;
-  EXPECT_EQ(runner->exercises().query(), "?exercise=1&bias.units=0");
+  EXPECT_EQ(runner->exercises().query(),
+            "?exercise=1&bias.mode=back_faces&bias.factor=1.1&bias.units=0&bias.clamp=0.25");
   std::filesystem::remove(file);
   // None: every slider free again, the defaults back.
   ASSERT_EQ(runner->exercises().choose(0), "");

@@ -220,5 +220,18 @@ TEST(Lesson06, SliderExtremesStayFiniteAndErrorFree) {
                 {"map.encoding=linear", "map.path=render_to_texture", "ramp.lookup=false"}});
 }
 
+TEST(Lesson06, AnExerciseChosenAfterAnotherSceneStartsFromItsOwnLight) {
+  // Picking exercise 1 with the cubes preset showing: the defaults' scene is loaded first, and
+  // the exercise's near and far are what the frame draws with, not the preset's.
+  auto runner = startLesson(kLesson, {"scene=cubes"}, 320, 240);
+  runner->renderFrame();
+  ASSERT_EQ(runner->exercises().choose(1), "");
+  runner->renderFrame();
+  EXPECT_FLOAT_EQ(runner->params().at("light.near").f(), 0.1f);
+  EXPECT_FLOAT_EQ(runner->params().at("light.far").f(), 500.0f);
+  EXPECT_FALSE(runner->params().at("shadow.fit").b());
+  EXPECT_GT(runner->measureError().metrics.false_lit_pct, 3.0) << "the expanded frustum's start";
+}
+
 }  // namespace
 }  // namespace shadows

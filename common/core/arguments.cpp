@@ -1,5 +1,6 @@
 #include "core/arguments.hpp"
 
+#include <filesystem>
 #include <fstream>
 
 #include <algorithm>
@@ -69,13 +70,27 @@ std::string readSet(Arguments& args, std::vector<std::string>& sets) {
 }
 
 std::string readSettingsFile(const std::string& path, std::vector<std::string>& sets) {
+  // A settings file is a few lines of text: a regular file, not a folder or a device.
+  constexpr std::uintmax_t kLargest = 1 << 20;
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (error || !std::filesystem::exists(status)) {
+    return "--settings " + printable(path) + ": cannot read it";
+  }
+  if (!std::filesystem::is_regular_file(status)) {
+    return "--settings " + printable(path) + ": not a file";
+  }
+  if (std::filesystem::file_size(path, error) > kLargest || error) {
+    return "--settings " + printable(path) + ": larger than a settings file (1 MiB)";
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) return "--settings " + printable(path) + ": cannot read it";
   std::vector<std::string> read;
   int number = 0;
   for (std::string line; std::getline(in, line);) {
     ++number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();  // written on Windows
+    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a UTF-8 BOM
+    if (!line.empty() && line.back() == '\r') line.pop_back();                // written on Windows
     const size_t start = line.find_first_not_of(" \t");
     if (start == std::string::npos || line[start] == '#') continue;
     line = line.substr(start, line.find_last_not_of(" \t") + 1 - start);
@@ -89,6 +104,7 @@ std::string readSettingsFile(const std::string& path, std::vector<std::string>& 
     }
     read.push_back(line);
   }
+  if (in.bad()) return "--settings " + printable(path) + ": cannot read it";
   sets.insert(sets.end(), read.begin(), read.end());
   return {};
 }

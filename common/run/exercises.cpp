@@ -2,10 +2,12 @@
 // on the command line, its starting settings and locks, its verdict on each truth, the
 // student's settings for the grader, and the grade.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
 #include "core/json.hpp"
+#include "gl/caps.hpp"
 #include "run/runner.hpp"
 
 namespace shadows {
@@ -28,8 +30,8 @@ std::string ExerciseRun::problem() const {
            (count == 0 ? std::string("no exercises")
                        : "exercises 1.." + std::to_string(count) + " (docs/EXERCISES.md)");
   }
-  if (!options.grade) return {};
-  // A submission moves only what the exercise lets a student move.
+  // A submission, or a page's link, moves only what the exercise lets a student move: a
+  // setting the grader refuses cannot show a verdict in the window or the page either.
   for (const std::string& set : options.sets) {
     const std::string name = set.substr(0, set.find('='));
     if (allowedIn(*chosen_, name)) continue;
@@ -64,6 +66,9 @@ std::string ExerciseRun::choose(int n) {
   Params& params = runner_.params_;
   const std::string view = params.at("view").choice();
   params.resetToDefaults();
+  // The defaults' scene now, before the exercise's light and camera: a scene loaded later
+  // (renderInto, after the panel) would put the preset's light back over the exercise's.
+  if (params.consume(kDirtyScene)) runner_.loadScene();
   chosen_.reset();
   verdict_ = {};
   judged_at_ = -1;
@@ -75,6 +80,16 @@ std::string ExerciseRun::choose(int n) {
   }
   params.setChoice(params.at("view"), view);  // the student's view stays
   lockWidgets();
+  // The sliders the exercise lets a student move are in view, folded sections opened once.
+  if (chosen_) {
+    for (const Param& p : params.all()) {
+      if (!p.shared || !allowedIn(*chosen_, p.name) || p.name == "view") continue;
+      const bool light = p.name.rfind("light.", 0) == 0 || p.name.rfind("camera.", 0) == 0;
+      runner_.window_.unfold.insert(light ? "Light and camera" : "Shadow map");
+    }
+  }
+  // Where the truth already measured is this very start, its verdict now, not "measuring...".
+  if (chosen_ && runner_.truth_.key() == runner_.errorKey()) judge();
   // Judged on the grader's picture size (a page fits its canvas so too: page_main.cpp).
   if (n > 0 && !runner_.options_.size_given) {
     const RunOptions& o = runner_.options_;
@@ -97,12 +112,17 @@ void ExerciseRun::lockWidgets() {
       [ex, why](const Param& p) { return allowedIn(ex, p.name) ? "" : why; });
 }
 
-// What a student changed, as name=value lines: with an exercise, what it lets them move.
+// What a student set, as name=value lines: with an exercise, every parameter it lets them
+// move (a fix that puts one back to its default is an answer too: the grader starts from the
+// exercise's settings, not the defaults); without one, what differs from the defaults.
 std::vector<std::string> ExerciseRun::changedSettings() const {
   std::vector<std::string> lines;
   for (const Param& p : runner_.params_.all()) {
     if (p.name == "view") continue;
-    if (chosen_ && !allowedIn(*chosen_, p.name)) continue;
+    if (chosen_) {
+      if (allowedIn(*chosen_, p.name)) lines.push_back(p.name + "=" + p.text());
+      continue;
+    }
     const bool same =
         p.kind == ParamKind::String
             ? p.string_value == p.string_fallback
@@ -161,6 +181,15 @@ int ExerciseRun::grade() {
   JsonWriter json;
   runner_.writeReport(json);
   const Verdict v = evaluate(*chosen_, json);
+  // A figure this build cannot measure (05's taps on GL 4.1 and ES: no storage buffers) is no
+  // answer either way.
+  for (const FigureResult& f : v.figures) {
+    if (!f.measured || !std::isfinite(*f.measured)) {
+      std::printf("%s exercise %d: no verdict: %s is not measured here (%s)\n", name.c_str(), n,
+                  f.figure->label.c_str(), caps().flavour.c_str());
+      return 1;
+    }
+  }
   std::string figures;
   for (const FigureResult& f : v.figures) figures += (figures.empty() ? "" : "; ") + f.line();
   std::printf("%s exercise %d (%s): %s: %s\n", name.c_str(), n, chosen_->title.c_str(),

@@ -196,11 +196,14 @@ void Runner::drawPanel(Frame& frame) {
     // Over the picture (headless --panel, a window too narrow for a column): narrow, in the
     // top-left corner, folded whole on small pictures, where it would hide everything.
     const float width = std::min(300.0f, 0.45f * static_cast<float>(frame.width));
-    ImGui::SetNextWindowPos(ImVec2(6, 6), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(width, static_cast<float>(frame.height) - 12),
-                             ImGuiCond_FirstUseEver);
+    // Placed once, then where the student drags it; placed again after a column (a window
+    // made too narrow for one), whose place would be off the picture now.
+    const ImGuiCond place = window_.was_column ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+    ImGui::SetNextWindowPos(ImVec2(6, 6), place);
+    ImGui::SetNextWindowSize(ImVec2(width, static_cast<float>(frame.height) - 12), place);
     ImGui::SetNextWindowCollapsed(frame.width < 600, ImGuiCond_FirstUseEver);
   }
+  window_.was_column = column;
   ImGui::Begin(
       name_.c_str(), nullptr,
       column ? ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse
@@ -319,12 +322,17 @@ void Runner::drawPanel(Frame& frame) {
     return p.name.rfind("light.", 0) == 0 || p.name.rfind("camera.", 0) == 0;
   };
   const auto section = [&](const char* title, bool open) {
-    if (window_.open_sections.count(title) != 0) ImGui::SetNextItemOpen(true);
+    if (window_.open_sections.count(title) != 0 || window_.unfold.erase(title) != 0) {
+      ImGui::SetNextItemOpen(true);
+    }
     return ImGui::CollapsingHeader(title, open ? ImGuiTreeNodeFlags_DefaultOpen : 0);
   };
   if (section("Technique", true)) {
     params_.drawWidgets([&](const Param& p) { return !p.shared && !top(p); });
+    // A lesson's own buttons set sliders an exercise may lock: off while one is chosen.
+    if (exercise_.chosen()) ImGui::BeginDisabled();
     lesson_->panel(frame);
+    if (exercise_.chosen()) ImGui::EndDisabled();
   }
   const auto mapSetting = [&](const Param& p) { return p.shared && !top(p) && !lightOrCamera(p); };
   const auto& all = params_.all();

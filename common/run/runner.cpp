@@ -256,8 +256,8 @@ int Runner::glErrors() const {
 
 void Runner::renderFrame(bool timed) {
   const GLuint target = window_.is_open ? 0 : gpu_->target->id();
-  int w = options_.width, h = options_.height;
-  if (window_.is_open) glfwGetFramebufferSize(gpu_->window, &w, &h);
+  // In a window options_ holds the picture's size: the framebuffer less the panel's column.
+  const int w = options_.width, h = options_.height;
   const bool panel = gpu_->imgui && (window_.is_open || options_.panel);
   renderInto(target, w, h, params_.at("view").choice(), timed, panel);
   GlErrorLog::poll();
@@ -267,8 +267,7 @@ void Runner::renderBaselineFrame() {
   Param* off = params_.find("shadow.off");
   const std::string view = params_.at("view").choice();
   if (off == nullptr || off->b() || view == "truth" || view == "error") return;
-  int w = options_.width, h = options_.height;
-  if (window_.is_open) glfwGetFramebufferSize(gpu_->window, &w, &h);
+  const int w = options_.width, h = options_.height;  // the picture's, as renderFrame's
   gpu_->ensureTargets(w, h);
   // What the lesson's frame told the runner, and what it has still to do (a dirty map must
   // still be rendered by the next real frame), survive the baseline frame, exception or not.

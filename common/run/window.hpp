@@ -58,6 +58,8 @@ class RunnerWindow {
   int column = 0;
   glm::ivec2 framebuffer{0};
   std::set<std::string> open_sections;  // openPanelSection
+  std::set<std::string> unfold;         // sections opened once (an exercise's sliders there)
+  bool was_column = false;              // the panel's layout last frame (a column or over)
   std::string saved;                    // the panel's "Save settings": where, or why not
 
  private:
