@@ -141,9 +141,15 @@ class PcfDithered final : public Lesson {
         filtered > 0 ? static_cast<double>(count("pcf_taps")) / static_cast<double>(filtered) : 0;
     const auto pass = f.measure.medianPassMs();
     const double eye_ms = pass.count("eye") ? pass.at("eye") : 0.0;
-    ImGui::Text("cost:  %5.2f taps/fragment, eye pass %.2f ms", per_fragment, eye_ms);
-    ImGui::Text("       skipped: %lld facing away, %lld after 4 probes",
-                count("pcf_skipped_facing_away"), count("pcf_stopped_early"));
+    // Where the flavour cannot count taps (no storage buffers: gl41, gles30), say so: a 0
+    // would read as a kernel that takes no taps.
+    if (f.measure.lastFrameUnavailable().count("pcf_taps") != 0) {
+      ImGui::Text("cost:  taps %s, eye pass %.2f ms", caps().unavailable().c_str(), eye_ms);
+    } else {
+      ImGui::Text("cost:  %5.2f taps/fragment, eye pass %.2f ms", per_fragment, eye_ms);
+      ImGui::Text("       skipped: %lld facing away, %lld after 4 probes",
+                  count("pcf_skipped_facing_away"), count("pcf_stopped_early"));
+    }
     const ErrorState& error = f.runner.lastError();
     if (error.valid) {
       ImGui::Text("error: vis_mae %.4f vs an area light r=%.3f", error.metrics.vis_mae,
