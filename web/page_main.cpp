@@ -95,9 +95,7 @@ void publish() {
 void fitCanvas() {
   if (g_runner->options().size_given) return;
   if (g_runner->exercises().chosen() != nullptr) {  // judged on the grader's picture, as natively
-    const int column =
-        g_runner->options().hide_panel ? 0 : static_cast<int>(shadows::RunnerWindow::kPanelColumn);
-    g_runner->window().fit(Runner::kExerciseWidth + column, Runner::kExerciseHeight);
+    g_runner->window().fitExercise();
     return;
   }
   double width = 0, height = 0;

@@ -4,9 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 
 #include "core/json.hpp"
+#include "core/output_files.hpp"
 #include "gl/caps.hpp"
 #include "run/runner.hpp"
 
@@ -91,12 +92,7 @@ std::string ExerciseRun::choose(int n) {
   // Where the truth already measured is this very start, its verdict now, not "measuring...".
   if (chosen_ && runner_.truth_.key() == runner_.errorKey()) judge();
   // Judged on the grader's picture size (a page fits its canvas so too: page_main.cpp).
-  if (n > 0 && !runner_.options_.size_given) {
-    const RunOptions& o = runner_.options_;
-    runner_.window_.fit(
-        Runner::kExerciseWidth + (o.hide_panel ? 0 : static_cast<int>(RunnerWindow::kPanelColumn)),
-        Runner::kExerciseHeight);
-  }
+  if (n > 0 && !runner_.options_.size_given) runner_.window_.fitExercise();
   return problem;
 }
 
@@ -135,7 +131,7 @@ std::vector<std::string> ExerciseRun::changedSettings() const {
 std::string ExerciseRun::save(const std::string& path) const {
   const std::string& name = runner_.name_;
   const int n = runner_.options_.exercise;
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "# " << name << " settings: " << name << " --settings " << path;
   if (chosen_) {
     out << "\n# exercise " << n << ": " << chosen_->title << "\n# grade it: " << name << " --grade "
@@ -143,8 +139,8 @@ std::string ExerciseRun::save(const std::string& path) const {
   }
   out << "\n";
   for (const std::string& line : changedSettings()) out << line << "\n";
-  out.flush();
-  return out ? "" : "cannot write " + path;
+  // As every output: a temporary renamed over the file, never half a submission.
+  return writeOutputFile(path, out.str()) ? "" : "cannot write " + path;
 }
 
 std::string ExerciseRun::query() const {

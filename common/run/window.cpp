@@ -251,6 +251,11 @@ void RunnerWindow::fit(int width, int height) {
   if (w != width || h != height) glfwSetWindowSize(r_.gpu_->window, width, height);
 }
 
+void RunnerWindow::fitExercise() {
+  fit(Runner::kExerciseWidth + (r_.options_.hide_panel ? 0 : static_cast<int>(kPanelColumn)),
+      Runner::kExerciseHeight);
+}
+
 int RunnerWindow::end() {
   GLFWwindow* window = r_.gpu_->window;
   const bool outputs_failed = r_.gpu_->loop.outputs_failed;
