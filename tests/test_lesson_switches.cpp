@@ -40,6 +40,14 @@ Render renderWith(const std::string& lesson, const std::vector<std::string>& set
   return r;
 }
 
+// A case's name as GoogleTest takes it: letters, digits and underscores.
+std::string testName(std::string name) {
+  for (char& ch : name) {
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  }
+  return name;
+}
+
 std::vector<std::string> with(std::vector<std::string> base, const std::string& set) {
   base.push_back(set);
   return base;
@@ -127,11 +135,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "volume.geometry=per_triangle",
                  "a volume per triangle: the same count, 50 times the triangles"}),
     [](const ::testing::TestParamInfo<SameCase>& test) {
-      std::string name = test.param.lesson.substr(0, 2) + "_" + test.param.set;
-      for (char& ch : name) {
-        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-      }
-      return name;
+      return testName(test.param.lesson.substr(0, 2) + "_" + test.param.set);
     });
 
 // ---------------------------------------------------------------- a fix and its failure
@@ -262,12 +266,8 @@ INSTANTIATE_TEST_SUITE_P(
                 2.0,
                 "P L = 0: every light ray, one z/w"}),
     [](const ::testing::TestParamInfo<FixCase>& test) {
-      std::string name = test.param.lesson.substr(0, 2) + "_" + test.param.set +
-                         (test.param.false_shadow ? "_false_shadow" : "_false_lit");
-      for (char& ch : name) {
-        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-      }
-      return name;
+      return testName(test.param.lesson.substr(0, 2) + "_" + test.param.set +
+                      (test.param.false_shadow ? "_false_shadow" : "_false_lit"));
     });
 
 // ---------------------------------------------------------------- double blending

@@ -67,10 +67,7 @@ std::string exerciseSummary() {
   const shadows::Verdict& v = g_runner->exercises().verdict();
   std::string line =
       "\nexercise " + std::to_string(g_runner->options().exercise) + " (" + ex->title + "): ";
-  if (v.figures.empty()) return line + "measuring...";
-  line += v.met ? "MET: " : "NOT MET: ";
-  for (size_t i = 0; i < v.figures.size(); ++i) line += (i ? "; " : "") + v.figures[i].line();
-  return line;
+  return line + (v.figures.empty() ? "measuring..." : v.line());
 }
 
 // Frame count, GL errors and truths measured every frame (the tests wait on them), the panel's

@@ -363,8 +363,7 @@ void Params::setChoice(Param& p, const std::string& choiceName) {
 
 void Params::resetToDefaults() {
   for (auto& p : params_) {
-    if (!std::equal(std::begin(p.value), std::end(p.value), std::begin(p.fallback)) ||
-        p.string_value != p.string_fallback) {
+    if (!p.atDefault()) {
       std::copy(std::begin(p.fallback), std::end(p.fallback), std::begin(p.value));
       p.string_value = p.string_fallback;
       changed(p);

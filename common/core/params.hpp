@@ -3,6 +3,7 @@
 // Changing one marks what depends on it dirty, so lessons redo only that work.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <deque>
 #include <functional>
@@ -66,6 +67,10 @@ struct Param {
   const std::string& s() const { return string_value; }
   bool is(const std::string& choiceName) const { return choice() == choiceName; }
   std::string text() const;  // the value as --set would take it
+  bool atDefault() const {   // the declared (or the preset's) default
+    return std::equal(std::begin(value), std::end(value), std::begin(fallback)) &&
+           string_value == string_fallback;
+  }
   // Declaration helpers: p.addFloat(...).logScale(), p.addString(...).checkedBy(fn).
   Param& logScale() {  // a slider that moves in decades
     logarithmic = true;

@@ -58,6 +58,13 @@ struct FigureResult {
 struct Verdict {
   std::vector<FigureResult> figures;
   bool met = false;
+  // "MET: false lit % 0.06 <= 0.07: met; ..." or "NOT MET: ...": the grader's line, and a
+  // page's under its canvas.
+  std::string line() const {
+    std::string text = met ? "MET: " : "NOT MET: ";
+    for (size_t i = 0; i < figures.size(); ++i) text += (i ? "; " : "") + figures[i].line();
+    return text;
+  }
 };
 
 // The exercise's figures read from a report written with JsonWriter.

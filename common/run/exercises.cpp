@@ -119,11 +119,7 @@ std::vector<std::string> ExerciseRun::changedSettings() const {
       if (allowedIn(*chosen_, p.name)) lines.push_back(p.name + "=" + p.text());
       continue;
     }
-    const bool same =
-        p.kind == ParamKind::String
-            ? p.string_value == p.string_fallback
-            : std::equal(std::begin(p.value), std::end(p.value), std::begin(p.fallback));
-    if (!same) lines.push_back(p.name + "=" + p.text());
+    if (!p.atDefault()) lines.push_back(p.name + "=" + p.text());
   }
   return lines;
 }
@@ -186,10 +182,8 @@ int ExerciseRun::grade() {
       return 1;
     }
   }
-  std::string figures;
-  for (const FigureResult& f : v.figures) figures += (figures.empty() ? "" : "; ") + f.line();
-  std::printf("%s exercise %d (%s): %s: %s\n", name.c_str(), n, chosen_->title.c_str(),
-              v.met ? "MET" : "NOT MET", figures.c_str());
+  std::printf("%s exercise %d (%s): %s\n", name.c_str(), n, chosen_->title.c_str(),
+              v.line().c_str());
   return v.met ? 0 : 1;
 }
 
