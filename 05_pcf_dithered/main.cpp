@@ -21,7 +21,7 @@
 
 #include "core/json.hpp"
 #include "lesson/lesson.hpp"
-#include "pcf_math.hpp"
+#include "math/pcf_math.hpp"
 #include "shadow/shadow_map.hpp"
 
 namespace shadows {

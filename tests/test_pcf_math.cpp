@@ -1,7 +1,7 @@
-// Lesson 05's arithmetic without GL (05_pcf_dithered/pcf_math.hpp): seed 000's "Depth
+// Lesson 05's arithmetic without GL (common/math/pcf_math.hpp): seed 000's "Depth
 // Values are not Blend-able" example, the kernels' tap offsets (the very ones pcf.glsl takes
 // as uTaps), and the area light a kernel imitates.
-#include "../05_pcf_dithered/pcf_math.hpp"
+#include "../common/math/pcf_math.hpp"
 
 #include <gtest/gtest.h>
 
