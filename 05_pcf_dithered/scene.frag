@@ -13,6 +13,7 @@ in vec3 vWorld;
 in vec3 vNormal;
 in vec4 vShadowCoord;
 uniform vec3 uColor;
+uniform float uRadius;  // kernel half-width in texels: the one setting of the kernel not compiled
 // Compiled per setting (main.cpp): VIEW (shaded, visibility, taps per fragment), SHADOW_OFF,
 // and PCF_COUNT 1 that adds this fragment's work to the counters (atomics cost; compiled out
 // when off).
@@ -39,7 +40,7 @@ float shadowTerm(vec3 n, vec3 toLight) {
   if (c.w <= 0.0) return 1.0;  // behind a spot light: outside its frustum
   vec3 p = c.xyz / c.w;
   p.z = min(p.z, 1.0);  // beyond the far plane: every depth format clamps B to 1
-  float shade = percentageCloser(p);
+  float shade = percentageCloser(p, uRadius);
 #if PCF_COUNT
   atomicAdd(taps, uint(gTaps));
   atomicAdd(filtered, 1u);

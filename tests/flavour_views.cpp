@@ -106,7 +106,10 @@ const std::map<std::string, std::map<std::string, std::set<std::string>>> kUnava
     {"gl45", {}},
     {"gl41",
      {{"05_pcf_dithered",
-       {"pcf_taps", "pcf_filtered_fragments", "pcf_stopped_early", "pcf_skipped_facing_away"}}}},
+       {"pcf_taps", "pcf_filtered_fragments", "pcf_stopped_early", "pcf_skipped_facing_away"}},
+      {"14_soft_shadows",
+       {"pcss_search_taps", "pcss_no_blocker", "pcss_all_blockers", "pcss_skipped_facing_away",
+        "pcf_taps", "pcf_filtered_fragments"}}}},
     {"gles30",
      {{"", {"fragment_invocations", "fragments_passed"}},
       {"05_pcf_dithered",
@@ -114,7 +117,10 @@ const std::map<std::string, std::map<std::string, std::set<std::string>>> kUnava
       {"06_dual_texture_8bit", {"pass2_lit_fragments"}},
       {"07_multidigit_16bit", {"pass2_lit_fragments", "pass3_lit_fragments"}},
       {"08_atmospherics",
-       {"air_fragments_passed", "air_fragments_shaded", "air_fragments_skipped"}}}},
+       {"air_fragments_passed", "air_fragments_shaded", "air_fragments_skipped"}},
+      {"14_soft_shadows",
+       {"pcss_search_taps", "pcss_no_blocker", "pcss_all_blockers", "pcss_skipped_facing_away",
+        "pcf_taps", "pcf_filtered_fragments"}}}},
 };
 
 void checkFlavourTable(const std::string& lesson, const Json& own) {

@@ -104,7 +104,9 @@ const std::map<std::string, std::vector<std::string>> kActsWhen = {
     {"map.depth_bits", kNearLight},
     // 04's clamp is the gradient bias's; 05's taps are the grid's and Poisson's.
     {"bias.clamp", {"bias.mode=gradient"}},
-    {"pcf.taps", {"pcf.mode=poisson"}},
+    {"05_pcf_dithered/pcf.taps", {"pcf.mode=poisson"}},
+    // 14: the one width is the fixed mode's (pcss derives its own).
+    {"14_soft_shadows/pcf.radius", {"pcss.mode=fixed"}},
     // How the copy is made shows in its counters, on frames that render the map.
     {"map.path", {"shadow.cache=false"}},
     // 09: the caps and the far distance act in z-fail and with a finite far plane; the method

@@ -413,6 +413,41 @@ Scene makeScene(const std::string& preset) {
     }
     s.light = {false, {0.0f, 10.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 90.0f, 10.0f, 1.0f, 30.0f};
     s.camera = {{0.0f, 1.5f, 9.5f}, {0.0f, 0.0f, -4.0f}, 45.0f, 0.1f, 100.0f};
+  } else if (preset == "contact") {
+    // Lesson 14: casters that touch the floor, where a real penumbra is zero at the contact
+    // and widens with the distance from it: a tall post, a plank leaning from the floor up
+    // away from the light, a ball resting on the floor. The light is low, the shadows long.
+    s.objects.push_back(floorObject(8.0f, 0.0f));
+    s.objects.push_back({"post",
+                         makeBox({0.08f, 1.1f, 0.08f}),
+                         translate({-2.0f, 1.1f, -1.3f}),
+                         {0.55f, 0.42f, 0.3f}});
+    const float lean = glm::radians(30.0f), half_length = 1.2f, half_thickness = 0.03f;
+    s.objects.push_back(
+        {"plank",
+         makeBox({half_length, half_thickness, 0.3f}),
+         translate({-0.6f, half_length * std::sin(lean) + half_thickness * std::cos(lean), 0.9f}) *
+             glm::rotate(glm::mat4(1.0f), lean, {0, 0, 1}),
+         {0.75f, 0.6f, 0.4f}});
+    s.objects.push_back(
+        {"ball", makeSphere(0.4f, 48, 24), translate({0.6f, 0.4f, -1.4f}), {0.5f, 0.8f, 0.4f}});
+    s.light = {false, {-4.5f, 4.5f, 2.2f}, {0.3f, 0.2f, -0.2f}, 75.0f, 10.0f, 2.0f, 16.0f};
+    s.camera = {{0.4f, 3.4f, 6.4f}, {0.4f, 0.4f, -0.1f}, 45.0f, 0.1f, 100.0f};
+  } else if (preset == "overlap") {
+    // Lesson 14: depth complexity two from the light. A high slat crosses over a low shelf,
+    // so a floor pixel's blocker search finds both, the slat 3 units up (a wide penumbra)
+    // and the shelf 0.6 up (a narrow one), and their average is neither.
+    s.objects.push_back(floorObject(8.0f, 0.0f));
+    s.objects.push_back({"shelf",
+                         makeBox({1.2f, 0.03f, 0.7f}),
+                         translate({0.0f, 0.6f, 0.3f}),
+                         {0.62f, 0.5f, 0.38f}});
+    s.objects.push_back({"slat",
+                         makeBox({0.12f, 0.03f, 2.2f}),
+                         translate({0.1f, 3.0f, 0.3f}),
+                         {0.75f, 0.6f, 0.4f}});
+    s.light = {false, {0.6f, 7.0f, 1.2f}, {0.0f, 0.3f, 0.2f}, 60.0f, 10.0f, 2.0f, 16.0f};
+    s.camera = {{3.8f, 5.2f, 4.6f}, {0.0f, 0.2f, 0.1f}, 45.0f, 0.1f, 100.0f};
   } else if (preset == "room") {
     s = room();
   } else if (preset == "strategy") {

@@ -122,11 +122,13 @@ void Runner::writeReport(JsonWriter& json) {
     // be stale while the lesson's regions are not).
     if (truth_.error().pixels && truth_.key() == errorKey()) {
       for (const ErrorRegion& region : lesson_->errorRegions()) {
-        const ErrorMetrics r = compareVisibilityIn(*truth_.error().pixels, region.inside);
+        const ErrorMetrics r =
+            compareVisibilityIn(*truth_.error().pixels, region.inside, region.truth_inside);
         json.beginObject(region.name);
         json.value("counted_pixels", r.counted_pixels);
         json.value("false_shadow_pct", r.counted_pixels > 0 ? r.false_shadow_pct : kNoFigure);
         json.value("false_lit_pct", r.counted_pixels > 0 ? r.false_lit_pct : kNoFigure);
+        json.value("vis_mae", r.counted_pixels > 0 ? r.vis_mae : kNoFigure);
         json.endObject();
       }
     }

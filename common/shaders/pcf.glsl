@@ -14,7 +14,6 @@ uniform sampler2DShadow uShadowMap;
 #ifdef PCF_TAP_COUNT
 const vec2 kUnitTaps[PCF_TAP_COUNT] = PCF_UNIT_TAPS;
 #endif
-uniform float uRadius;  // kernel half-width in texels: the one setting of the kernel not compiled
 uniform vec2 uTexel;    // 1 / map size
 
 // `precise` keeps offset = unit * radius one rounded multiply, as tapOffsets() computes it,
@@ -37,9 +36,10 @@ float tap(vec3 c, vec2 offsetTexels) {
 }
 
 #ifdef PCF_TAP_COUNT
-// A tap of the compiled kernel: a unit offset scaled by the radius.
-float kernelTap(vec3 c, vec2 unitOffset) {
-  PRECISE vec2 offsetTexels = unitOffset * uRadius;
+// A tap of the compiled kernel: a unit offset scaled by the radius (the kernel's half-width in
+// texels: lesson 05's uniform, lesson 14's per fragment).
+float kernelTap(vec3 c, vec2 unitOffset, float radius) {
+  PRECISE vec2 offsetTexels = unitOffset * radius;
   return tap(c, offsetTexels);
 }
 #endif
@@ -49,7 +49,7 @@ float kernelTap(vec3 c, vec2 unitOffset) {
 // each prefix is spread out): the average of PCF_TAP_COUNT taps. pcf_math.hpp puts the early
 // out's probes first in both, the grid's four corners and the disk's four rim points.
 #if PCF_MODE == PCF_MODE_GRID || PCF_MODE == PCF_MODE_POISSON
-float pcfKernel(vec3 c) {
+float pcfKernel(vec3 c, float radius) {
   const int n = PCF_TAP_COUNT;
   float sum = 0.0;
 #if PCF_EARLY_OUT == 1
@@ -60,18 +60,18 @@ float pcfKernel(vec3 c) {
     // loop, which it leaves once no pixel of the vector is still in it; but it runs a loop's
     // body at least once, so the fourth probe is the loop's first turn: where all four agree
     // the vector pays no turn beyond the probes (an empty turn cost about two taps).
-    for (int k = 0; k < 3; ++k) sum += kernelTap(c, kUnitTaps[k]);
+    for (int k = 0; k < 3; ++k) sum += kernelTap(c, kUnitTaps[k], radius);
     // Always 3 (a tap is at most 1): a start the compiler cannot know keeps the loop a loop,
     // where one of known length would be unrolled and every turn run.
     int k = sum > 3.0 ? 4 : 3;
     do {
-      sum += kernelTap(c, kUnitTaps[k]);
+      sum += kernelTap(c, kUnitTaps[k], radius);
       if (k == 3) gStopped = sum == 0.0 || sum == 4.0;
     } while (++k < n && !gStopped);
     return gStopped ? sum * 0.25 : sum / float(n);
   }
 #endif
-  for (int k = 0; k < n; ++k) sum += kernelTap(c, kUnitTaps[k]);
+  for (int k = 0; k < n; ++k) sum += kernelTap(c, kUnitTaps[k], radius);
   return sum / float(n);
 }
 #endif
@@ -79,7 +79,7 @@ float pcfKernel(vec3 c) {
 // Seed 001 "PCF with Dithering": 4 taps whose pattern depends on gl_FragCoord mod 2. The four
 // patterns of a 2 x 2 pixel block together are the 4 x 4 grid of the same radius.
 #if PCF_MODE == PCF_MODE_DITHERED
-float pcfDithered(vec3 c) {
+float pcfDithered(vec3 c, float radius) {
   bvec2 odd = equal(ivec2(mod(floor(gl_FragCoord.xy), 2.0)), ivec2(1));
   float sum = 0.0;
   for (int k = 0; k < 4; ++k) {
@@ -87,18 +87,18 @@ float pcfDithered(vec3 c) {
     // pixel's parity cost llvmpipe more than the four taps' selects (callgrind, README).
     vec2 even_row = odd.x ? kUnitTaps[4 + k] : kUnitTaps[k];
     vec2 odd_row = odd.x ? kUnitTaps[12 + k] : kUnitTaps[8 + k];
-    sum += kernelTap(c, odd.y ? odd_row : even_row);
+    sum += kernelTap(c, odd.y ? odd_row : even_row, radius);
   }
   return sum * 0.25;
 }
 #endif
 
-// c: (s, t, r) after the divide by q.
-float percentageCloser(vec3 c) {
+// c: (s, t, r) after the divide by q; radius: the kernel's half-width in texels.
+float percentageCloser(vec3 c, float radius) {
 #if PCF_MODE == PCF_MODE_GRID || PCF_MODE == PCF_MODE_POISSON
-  return pcfKernel(c);
+  return pcfKernel(c, radius);
 #elif PCF_MODE == PCF_MODE_DITHERED
-  return pcfDithered(c);
+  return pcfDithered(c, radius);
 #else
   return tap(c, vec2(0.0));  // none (nearest) or hw2x2 (the sampler is LINEAR: 4 texels, weighted)
 #endif

@@ -56,7 +56,8 @@ std::string notCountedReason(const ErrorMetrics& m) {
 }
 
 ErrorMetrics compareVisibilityIn(const ErrorPixels& pixels,
-                                 const std::function<bool(glm::vec4 position)>& inside) {
+                                 const std::function<bool(glm::vec4 position)>& inside,
+                                 const std::function<bool(float truth)>& truthInside) {
   if (pixels.position.size() != pixels.truth.size()) {
     throw std::invalid_argument("compareVisibilityIn: positions and pixels differ in size");
   }
@@ -64,7 +65,9 @@ ErrorMetrics compareVisibilityIn(const ErrorPixels& pixels,
   std::vector<float> weight = pixels.weight;
   for (std::size_t i = 0; i < weight.size() && i < pixels.position.size(); ++i) {
     const glm::vec4 p = pixels.position[i];
-    if (p.w < 0.0f || !inside(p)) weight[i] = 0.0f;
+    if (p.w < 0.0f || !inside(p) || (truthInside && !truthInside(pixels.truth[i]))) {
+      weight[i] = 0.0f;
+    }
   }
   ErrorMetrics m = compareVisibility(pixels.rendered, pixels.truth, weight);
   m.nonfinite_pixels = 0;  // compareVisibility counts them in every pixel, not the region's

@@ -1,0 +1,254 @@
+// Lesson 14: soft shadows that harden at contact, percentage-closer soft shadows (Fernando,
+// "Percentage-Closer Soft Shadows", 2005) against an area light's ray-traced truth (seed 003:
+// "Hard vs. soft shadows", umbra and penumbra; "fake soft shadow through filtering").
+//
+// A real light has a size. Where a caster touches the floor its shadow is sharp; a metre up,
+// the light's disk shows around its edge and the penumbra widens with that gap. Lesson 05's
+// PCF blurs every edge by one width. PCSS measures the gap per pixel:
+//   1. search the map near the pixel for blockers and average their distance from the light;
+//   2. from similar triangles, the penumbra is R (z_receiver - z_blocker) / z_blocker wide;
+//   3. filter with lesson 05's PCF over that width.
+// Modes: pcss; fixed (lesson 05's one width, the comparison); hard (one compare, lesson 04).
+// The truth is the same disk light in every mode (pcss.light_radius), so each is scored by
+// how far it is from the shadow that light really casts.
+#include <imgui.h>
+
+#include <algorithm>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "core/json.hpp"
+#include "lesson/lesson.hpp"
+#include "math/pcf_math.hpp"
+#include "pcss_math.hpp"
+#include "shadow/shadow_map.hpp"
+
+namespace shadows {
+
+namespace {
+const std::vector<std::string> kSoftModes = {"hard", "fixed", "pcss"};
+enum class SoftMode { Hard, Fixed, Pcss };
+// Lesson 05's kernels that take a width (none and hw2x2 have none of their own).
+const std::vector<std::string> kKernels = {"grid", "dithered", "poisson"};
+pcf::Mode kernelMode(const std::string& name) {
+  return name == "grid"       ? pcf::Mode::Grid
+         : name == "dithered" ? pcf::Mode::Dithered
+                              : pcf::Mode::Poisson;
+}
+// The counters scene.frag adds to, in its buffer's order.
+const char* const kCounterNames[6] = {"pcss_search_taps",       "pcf_taps",
+                                      "pcf_filtered_fragments", "pcss_no_blocker",
+                                      "pcss_all_blockers",      "pcss_skipped_facing_away"};
+}  // namespace
+
+class SoftShadows final : public Lesson {
+ public:
+  std::string title() const override { return "Soft shadows: a blocker search sets the penumbra"; }
+  std::string seeds() const override {
+    return "seed 003: Hard vs. soft shadows, Soft shadows (umbra, penumbra); seed 001: Soft "
+           "Shadows; Fernando 2005, Percentage-Closer Soft Shadows";
+  }
+  std::vector<std::string> debugViews() const override {
+    return {"blockers", "penumbra", "light_depth"};
+  }
+  std::vector<std::string> scenes() const override {
+    return {"contact", "overlap", "torus_pyramid", "dueling", "cubes"};
+  }
+
+  void declare(Params& p) override {
+    map_.declare(p);
+    // The preset's frustum (shadow.fit off), not lesson 03's fit to the casters: an area light's
+    // penumbra reaches past the point light's fitted cone, and the error counts only inside it.
+    mode_ = p.addChoice("pcss.mode", kSoftModes, "pcss",
+                        "pcss: search, then filter by the gap; fixed: lesson 05's one width; "
+                        "hard: one compare");
+    light_radius_ = p.addFloat("pcss.light_radius", 0.3f, 0.0f, 1.0f,
+                               "the light's disk radius, world units (the truth's light too)");
+    search_taps_ = p.addInt("pcss.search_taps", 16, 1, 64, "Poisson points of the blocker search");
+    skip_umbra_ =
+        p.addBool("pcss.skip_umbra", true, "every search tap a blocker: umbra, no filter");
+    kernel_ = p.addChoice("pcf.kernel", kKernels, "poisson", "lesson 05's filter kernel");
+    taps_ = p.addInt("pcf.taps", 16, 1, 64, "grid: up to N x N of this; poisson: this many");
+    fixed_radius_ =
+        p.addFloat("pcf.radius", 6.0f, 0.0f, 32.0f, "fixed: the kernel's one half-width in texels");
+    filter_ = p.at("shadow.filter");  // the filter's compares: 2x2 bilinear each with linear
+    count_ = p.addBool("pcss.count", true, "count taps per fragment (atomics cost)");
+    dimming_ = p.addFloat("dimming", 0.4f, 0.0f, 1.0f,
+                          "diffuse left in shadow: dimming + (1-dimming)*shade");
+    // Lesson 04's default bias: back faces into the map, plus glPolygonOffset(factor, units).
+    factor_ =
+        p.addFloat("bias.factor", 1.1f, 0.0f, 20.0f, "glPolygonOffset factor", kDirtyShadowMap);
+    units_ = p.addFloat("bias.units", 4.0f, 0.0f, 1e7f, "glPolygonOffset units", kDirtyShadowMap)
+                 .logScale();
+  }
+
+  void init() override {
+    eye_programs_ = ProgramVariants(commonShaderDir() / "shadow_coord.vert",
+                                    lessonFile(LESSON_DIR, "scene.frag"));
+    compare_ = Sampler::depth(/*compare=*/true, GL_NEAREST);  // the filter's compares
+    linear_ = Sampler::depth(/*compare=*/true, GL_LINEAR);    // ... with shadow.filter=linear
+    depths_ = Sampler::depth(/*compare=*/false, GL_NEAREST);  // the search's depths
+    counters_ = CounterBuffer(6);
+  }
+
+  void render(Frame& f) override {
+    if (map_.prepare(f)) map_.renderCasters(f, ShadowMap::backFacesBias(factor_(), units_()));
+    // One light for every mode: a technique is scored against the shadow it imitates.
+    f.truth_area_radius = light_radius_();
+    if (map_.drawDepthView(f)) return;
+    search_from_ = searchFrom(f);
+
+    const bool counting = count_() && f.measure.enabled() && caps().storage_buffers;
+    if (counting) counters_.zeroAndBind(0);
+    {
+      auto timing = f.measure.pass("eye", /*countPassed=*/true);
+      f.clearTarget();
+      map_.texture().bind(0);
+      (filter_.name() == "linear" ? linear_ : compare_).bind(0);
+      map_.texture().bind(1);
+      depths_.bind(1);
+      const pcf::Mode kernel = kernelMode(kernel_.name());
+      const std::vector<glm::vec2> unit = pcf::unitTapOffsets(kernel, taps_());
+      const std::vector<glm::vec2> search = searchOffsets();
+      const Program& e = eye_programs_.get(
+          {mode_.defines(),
+           choiceDefines("pcf.mode", pcf::kModeNames, kernel_.name()),
+           {defineVec2Array("PCF_UNIT_TAPS", unit), "PCF_TAP_COUNT " + std::to_string(unit.size()),
+            "PCF_EARLY_OUT 0", defineVec2Array("SEARCH_UNIT_TAPS", search),
+            "SEARCH_TAP_COUNT " + std::to_string(search.size())},
+           skip_umbra_.defines(),
+           define("PCSS_COUNT", counting),
+           f.viewDefines(),
+           define("SHADOW_OFF", map_.off())});
+      e.set("uViewProjection", f.projection * f.view);
+      e.set("uShadowMatrix", map_.textureMatrix());  // B * P_light * V_light
+      e.set("uShadowMap", 0);
+      e.set("uDepthMap", 1);
+      e.set("uTexel", glm::vec2(1.0f / static_cast<float>(map_.width()),
+                                1.0f / static_cast<float>(map_.height())));
+      e.set("uLightProjection", map_.lightProjection());
+      e.set("uLightRadius", light_radius_());
+      e.set("uSearchFrom", search_from_);
+      e.set("uFixedRadius", fixed_radius_());
+      f.setLightingUniforms(e, dimming_());
+      f.drawObjects(e, Objects::All);
+      Sampler::unbind(0);
+      Sampler::unbind(1);
+    }
+    if (counting) {  // not during the runner's own truth renders
+      const std::vector<GLuint> counts = counters_.read();
+      for (size_t k = 0; k < 6; ++k) {
+        counts_[k] = counts[k];
+        f.measure.count(kCounterNames[k], static_cast<long long>(counts_[k]));
+      }
+    } else if (count_() && f.measure.enabled()) {
+      for (const char* name : kCounterNames) f.measure.count(name, std::optional<long long>());
+    }
+    if (f.mode != "visibility") map_.drawInset(f);
+  }
+
+  void panel(Frame& f) override {
+    Params& p = f.params;
+    auto preset = [&](const char* label, const char* mode) {
+      if (ImGui::Button(label)) p.setChoice(mode_.param(), mode);
+    };
+    preset("PCSS", "pcss");
+    ImGui::SameLine();
+    preset("one width (05)", "fixed");
+    ImGui::SameLine();
+    preset("hard (04)", "hard");
+    const auto& counts = f.measure.lastFrameCounts();
+    const auto count = [&](const char* name) {
+      const auto it = counts.find(name);
+      return it == counts.end() ? 0LL : it->second;
+    };
+    if (f.measure.lastFrameUnavailable().count("pcf_taps") != 0) {
+      ImGui::Text("cost:  taps %s", caps().unavailable().c_str());
+    } else {
+      const long long filtered = count("pcf_filtered_fragments");
+      const long long searched = count("pcss_search_taps");
+      ImGui::Text("cost:  %lld search + %lld filter taps (%.1f per filtered fragment)", searched,
+                  count("pcf_taps"),
+                  filtered > 0
+                      ? static_cast<double>(count("pcf_taps")) / static_cast<double>(filtered)
+                      : 0.0);
+      ImGui::Text("       no filter: %lld no blocker, %lld umbra, %lld facing away",
+                  count("pcss_no_blocker"), count("pcss_all_blockers"),
+                  count("pcss_skipped_facing_away"));
+    }
+    const ErrorState& error = f.runner.lastError();
+    if (error.valid) {
+      ImGui::Text("error: vis_mae %.4f against a disk light of radius %.2f", error.metrics.vis_mae,
+                  light_radius_());
+    }
+  }
+
+  // The penumbra, the umbra and the lit area as the truth draws them: a soft shadow is right
+  // or wrong mostly in the first.
+  std::vector<ErrorRegion> errorRegions() const override {
+    const auto all = [](glm::vec4) { return true; };
+    return {{"penumbra", all, [](float t) { return t > 0.0f && t < 1.0f; }},
+            {"umbra", all, [](float t) { return t == 0.0f; }},
+            {"lit", all, [](float t) { return t == 1.0f; }}};
+  }
+
+  void report(JsonWriter& json) const override {
+    json.value("truth_area_radius", light_radius_());
+    json.value("search_from_distance", search_from_);
+    const bool counted = caps().storage_buffers && count_();
+    const auto ratio = [&](size_t a, size_t b) {
+      return counted ? std::optional<double>(
+                           counts_[b] > 0 ? static_cast<double>(counts_[a]) / counts_[b] : 0.0)
+                     : std::optional<double>();
+    };
+    // Counted only with pcss.count on and storage buffers (GL 4.3); else null.
+    json.value("taps_per_filtered_fragment", ratio(1, 2));
+    const GLuint shaded = counts_[2] + counts_[3] + counts_[4];  // fragments the map decided
+    json.value(
+        "search_taps_per_fragment",
+        counted ? std::optional<double>(shaded > 0 ? static_cast<double>(counts_[0]) / shaded : 0.0)
+                : std::optional<double>());
+  }
+
+ private:
+  // Where the search cone is cut (pcss_math.hpp searchRadiusWorld): no blocker is nearer the
+  // light than the nearest caster, so the cone stops there, not at the near plane (Fernando's
+  // choice, as wide as the light is far from the near plane: a needlessly wide search, whose
+  // sparse taps miss thin blockers and never find a whole umbra).
+  float searchFrom(const Frame& f) const {
+    const float near_plane = pcss::lightDistance(map_.lightProjection(), 0.0f);
+    const Bounds casters = f.scene.bounds(/*castersOnly=*/true);
+    if (casters.empty()) return near_plane;
+    float nearest = 1e30f;
+    for (int k = 0; k < 8; ++k) {
+      const glm::vec3 corner((k & 1) ? casters.max.x : casters.min.x,
+                             (k & 2) ? casters.max.y : casters.min.y,
+                             (k & 4) ? casters.max.z : casters.min.z);
+      nearest = std::min(nearest, glm::dot(corner - f.light.position, f.light.direction));
+    }
+    return std::max(near_plane, nearest);
+  }
+
+  // The search's Poisson points in the unit circle: lesson 05's disk, its first N (one point,
+  // the centre, for N = 1: a hard search).
+  std::vector<glm::vec2> searchOffsets() const {
+    const int n = search_taps_();
+    if (n <= 1) return {glm::vec2(0.0f)};
+    return {pcf::poissonDisk().begin(), pcf::poissonDisk().begin() + n};
+  }
+
+  ShadowMap map_;
+  ProgramVariants eye_programs_;
+  Sampler compare_, linear_, depths_;
+  CounterBuffer counters_;
+  ChoiceParam<SoftMode> mode_;
+  ChoiceParam<> kernel_, filter_;
+  FloatParam light_radius_, fixed_radius_, dimming_, factor_, units_;
+  IntParam search_taps_, taps_;
+  BoolParam skip_umbra_, count_;
+  GLuint counts_[6] = {0, 0, 0, 0, 0, 0};
+  float search_from_ = 0.0f;  // the distance from the light where the search cone is cut
+};
+
+SHADOWS_LESSON(SoftShadows);
+
+}  // namespace shadows
