@@ -51,7 +51,7 @@ class SoftShadows final : public Lesson {
     return {"blockers", "penumbra", "light_depth"};
   }
   std::vector<std::string> scenes() const override {
-    return {"contact", "overlap", "torus_pyramid", "dueling", "cubes"};
+    return {"contact", "overlap", "torus_pyramid", "grazing", "dueling", "cubes"};
   }
 
   void declare(Params& p) override {
@@ -165,21 +165,48 @@ class SoftShadows final : public Lesson {
       ImGui::Text("cost:  taps %s", caps().unavailable().c_str());
     } else {
       const long long filtered = count("pcf_filtered_fragments");
-      const long long searched = count("pcss_search_taps");
-      ImGui::Text("cost:  %lld search + %lld filter taps (%.1f per filtered fragment)", searched,
-                  count("pcf_taps"),
-                  filtered > 0
-                      ? static_cast<double>(count("pcf_taps")) / static_cast<double>(filtered)
-                      : 0.0);
-      ImGui::Text("       no filter: %lld no blocker, %lld umbra, %lld facing away",
-                  count("pcss_no_blocker"), count("pcss_all_blockers"),
-                  count("pcss_skipped_facing_away"));
+      const long long searched = filtered + count("pcss_no_blocker") + count("pcss_all_blockers");
+      const auto per = [](long long a, long long b) {
+        return b > 0 ? static_cast<double>(a) / static_cast<double>(b) : 0.0;
+      };
+      ImGui::TextWrapped("cost: %.1f search + %.1f filter taps a fragment",
+                         per(count("pcss_search_taps"), searched),
+                         per(count("pcf_taps"), filtered));
+      ImGui::TextWrapped("filtered %lld; no filter: %lld lit, %lld umbra", filtered,
+                         count("pcss_no_blocker"), count("pcss_all_blockers"));
     }
     const ErrorState& error = f.runner.lastError();
     if (error.valid) {
-      ImGui::Text("error: vis_mae %.4f against a disk light of radius %.2f", error.metrics.vis_mae,
-                  light_radius_());
+      ImGui::TextWrapped("error: vis_mae %.4f against a disk light, r = %.2f",
+                         error.metrics.vis_mae, light_radius_());
     }
+  }
+
+  // docs/EXERCISES.md has the intended solutions.
+  std::vector<Exercise> exercises() const override {
+    using B = Figure::Bound;
+    return {{.title = "A penumbra that follows the gap",
+             .goal = "Lesson 05's one width blurs the post's shadow as much at its foot as at its "
+                     "tip, and no width gets the penumbra's vis_mae under 0.08. Get it to 0.05 "
+                     "or less, with at most 16 filter taps per filtered fragment and at most 8 "
+                     "search taps per fragment.",
+             .setup = {"pcss.mode=fixed"},
+             .allowed = {"pcss.mode", "pcf.radius", "pcss.search_taps"},
+             .figures = {{"/error/penumbra/vis_mae", "penumbra vis_mae", B::AtMost, 0.05},
+                         {"/taps_per_filtered_fragment", "filter taps", B::AtMost, 16},
+                         {"/search_taps_per_fragment", "search taps", B::AtMost, 8}},
+             .hint = "How wide should the blur be where the post touches the floor? Something "
+                     "has to measure the gap first (view=blockers)."},
+            {.title = "Half the lookups, no worse",
+             .goal = "32 search taps and a 32-tap filter: the penumbra's vis_mae is 0.030. Keep "
+                     "it at 0.037 or less with at most 8 search taps and 16 filter taps.",
+             .setup = {"pcss.search_taps=32", "pcf.taps=32"},
+             .allowed = {"pcss.search_taps", "pcf.taps", "pcf.kernel"},
+             .figures = {{"/error/penumbra/vis_mae", "penumbra vis_mae", B::AtMost, 0.037},
+                         {"/taps_per_filtered_fragment", "filter taps", B::AtMost, 16},
+                         {"/search_taps_per_fragment", "search taps", B::AtMost, 8}},
+             .hint = "The search only needs a rough average; the filter draws the edge. Lesson "
+                     "05's 16-tap kernels are not equal at an edge: try each."}};
   }
 
   // The penumbra, the umbra and the lit area as the truth draws them: a soft shadow is right
