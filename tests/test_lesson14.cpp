@@ -5,6 +5,9 @@
 // radius 0 giving lesson 04's hard shadow bit for bit.
 #include "harness.hpp"
 
+#include <cmath>
+#include <map>
+
 namespace shadows {
 namespace {
 
@@ -107,6 +110,58 @@ TEST(Lesson14, APointLightGivesTheHardShadowBitForBit) {
             0u);
   // And with a radius the picture is softer: many pixels strictly between black and white.
   EXPECT_GT(testing::pixelsDiffering(visibility({}), hard, 8), 1000u);
+}
+
+// The post's shadow on `contact`, measured across at a distance from its foot, as
+// 14_soft_shadows/contact_plot.py measures it for the README's plot (coarser: 0.02-unit strips
+// at 640x480): the stretch where the visibility, averaged in each strip, is under 0.95.
+double shadowWidth(const ErrorPixels& px, bool truth, double from, double to) {
+  const glm::vec2 foot(-2.0f, -1.3f), light(-4.5f, 2.2f);  // common/core/scene.cpp, x and z
+  const glm::vec2 u = glm::normalize(foot - light);
+  constexpr double kStrip = 0.02, kReach = 0.6;
+  std::map<int, std::pair<double, int>> strips;
+  for (size_t i = 0; i < px.position.size(); ++i) {
+    const glm::vec4 p = px.position[i];
+    if (p.w != 0.0f || px.truth[i] < 0.0f) continue;  // counted pixels of the floor (object 0)
+    const glm::vec2 d = glm::vec2(p.x, p.z) - foot;
+    const double along = glm::dot(d, u), across = -d.x * u.y + d.y * u.x;
+    if (along < from || along >= to || std::abs(across) >= kReach) continue;
+    auto& strip = strips[static_cast<int>(std::floor(across / kStrip))];
+    strip.first += truth ? px.truth[i] : px.rendered[i];
+    strip.second += 1;
+  }
+  EXPECT_GE(strips.size(), static_cast<size_t>(0.8 * 2 * kReach / kStrip)) << from;
+  int shadowed = 0;
+  for (const auto& [k, strip] : strips) shadowed += strip.first / strip.second < 0.95 ? 1 : 0;
+  return kStrip * shadowed;
+}
+
+TEST(Lesson14, ThePenumbraWidensWithTheDistanceFromTheContactAsTheTruthsDoes) {
+  // The README's plot (contact_plot.py): the truth's shadow 0.28 wide near the post's foot and
+  // 0.77 three units on; PCSS within 0.03 of it; the single width from 0.34 to 0.53 (wider
+  // only because the map's texels are, further from the light).
+  const std::vector<std::string> camera = {"camera.pos=2.0,4.8,-0.6", "camera.target=-1.0,0,-2.9"};
+  double near_width[3], far_width[3];  // truth, pcss, fixed
+  for (int k = 0; k < 2; ++k) {
+    std::vector<std::string> sets = camera;
+    sets.push_back(k == 0 ? "pcss.mode=pcss" : "pcss.mode=fixed");
+    auto runner = startLesson(kLesson, sets, 640, 480);
+    runner->renderFrame();
+    const ErrorState& e = runner->measureError();
+    ASSERT_TRUE(e.valid && e.pixels);
+    if (k == 0) {
+      near_width[0] = shadowWidth(*e.pixels, true, 0.25, 0.5);
+      far_width[0] = shadowWidth(*e.pixels, true, 3.25, 3.5);
+    }
+    near_width[k + 1] = shadowWidth(*e.pixels, false, 0.25, 0.5);
+    far_width[k + 1] = shadowWidth(*e.pixels, false, 3.25, 3.5);
+  }
+  EXPECT_GT(far_width[0], 2.0 * near_width[0]);  // the truth's penumbra grows
+  for (const double* w : {near_width, far_width}) {
+    EXPECT_NEAR(w[1], w[0], 0.05) << "PCSS";
+  }
+  // The single width grows by less than half of the truth's growth.
+  EXPECT_LT(far_width[2] - near_width[2], 0.5 * (far_width[0] - near_width[0]));
 }
 
 }  // namespace
