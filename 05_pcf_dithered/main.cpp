@@ -22,6 +22,7 @@
 #include "core/json.hpp"
 #include "lesson/lesson.hpp"
 #include "math/pcf_math.hpp"
+#include "shadow/area_match.hpp"
 #include "shadow/shadow_map.hpp"
 
 namespace shadows {
@@ -76,7 +77,8 @@ class PcfDithered final : public Lesson {
                      : mode == pcf::Mode::Hw2x2             ? 0.5f  // a tent over 2 texels
                      : mode == pcf::Mode::Grid && grid == 1 ? 0.0f
                                                             : radius;
-    f.truth_area_radius = matchAreaLight(f, kernel_texels_);
+    match_ = matchAreaLight(f, map_, kernel_texels_);
+    f.truth_area_radius = match_.radius;
     if (map_.drawDepthView(f)) return;
 
     // Counting needs a storage buffer (GL 4.3): elsewhere the counts are unavailable.
@@ -153,7 +155,7 @@ class PcfDithered final : public Lesson {
     const ErrorState& error = f.runner.lastError();
     if (error.valid) {
       ImGui::Text("error: vis_mae %.4f vs an area light r=%.3f", error.metrics.vis_mae,
-                  area_radius_);
+                  match_.radius);
     }
   }
 
@@ -189,10 +191,10 @@ class PcfDithered final : public Lesson {
 
   void report(JsonWriter& json) const override {
     json.value("kernel_half_width_texels", kernel_texels_);
-    json.value("truth_area_radius", area_radius_);
-    json.value("match_occluder_distance", d_occluder_);
-    json.value("match_receiver_distance", d_receiver_);
-    json.value("match_texel_world", texel_world_);
+    json.value("truth_area_radius", match_.radius);
+    json.value("match_occluder_distance", match_.occluder_distance);
+    json.value("match_receiver_distance", match_.receiver_distance);
+    json.value("match_texel_world", match_.texel_world);
     // Counted only with pcf.count on and storage buffers (GL 4.3); else null, never a number
     // left from another frame.
     if (caps().storage_buffers && count_()) {
@@ -217,28 +219,6 @@ class PcfDithered final : public Lesson {
             define("PCF_TAP_COUNT", static_cast<int>(unit.size()))[0]};
   }
 
-  // The kernel's penumbra matched where it matters most (pcf::areaLightRadius): the ray from
-  // the light through the casters' centre, and the receiver the casters rest on (their
-  // lowest point) further along it. The texel size is taken at that receiver.
-  float matchAreaLight(const Frame& f, float kernelTexels) {
-    const Bounds casters = f.scene.bounds(/*castersOnly=*/true);
-    const LightFrustum& fr = map_.frustum();
-    const glm::vec3 light = f.light.position, centre = casters.center();
-    const glm::vec3 ray = f.light.directional || glm::distance(centre, light) < 1e-4f
-                              ? f.light.direction
-                              : glm::normalize(centre - light);
-    d_occluder_ = glm::dot(centre - light, ray);
-    const float down = -ray.y;  // how fast the ray descends toward the floor
-    const float gap = down > 0.05f ? (centre.y - casters.min.y) / down : casters.radius();
-    d_receiver_ = d_occluder_ + gap;
-    // Depth along the light's axis (a receiver behind a spot light gets no shadow anyway).
-    const float axial = std::max(glm::dot(ray * d_receiver_, f.light.direction), fr.near);
-    texel_world_ = map_.texelWorldSize(axial);
-    area_radius_ =
-        pcf::areaLightRadius(kernelTexels, texel_world_, d_occluder_, d_receiver_, fr.directional);
-    return area_radius_;
-  }
-
   ShadowMap map_;
   // scene.frag + pcf.glsl compiled for one filter, view, early out, counting and shadow.off,
   // when a setting first asks for it: a frame runs only its own kernel.
@@ -251,7 +231,8 @@ class PcfDithered final : public Lesson {
   IntParam taps_;
   BoolParam early_out_, count_;
   GLuint counts_[4] = {0, 0, 0, 0};  // taps, filtered, stopped early, facing away
-  float kernel_texels_ = 0, area_radius_ = 0, d_occluder_ = 0, d_receiver_ = 0, texel_world_ = 0;
+  float kernel_texels_ = 0;
+  AreaLightMatch match_;  // the truth's area light for this kernel (shadow/area_match.hpp)
 };
 
 SHADOWS_LESSON(PcfDithered);
