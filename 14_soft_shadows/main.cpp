@@ -213,9 +213,9 @@ class SoftShadows final : public Lesson {
   // or wrong mostly in the first.
   std::vector<ErrorRegion> errorRegions() const override {
     const auto all = [](glm::vec4) { return true; };
-    return {{"penumbra", all, [](float t) { return t > 0.0f && t < 1.0f; }},
-            {"umbra", all, [](float t) { return t == 0.0f; }},
-            {"lit", all, [](float t) { return t == 1.0f; }}};
+    return {{"penumbra", all, [](float t, float) { return t > 0.0f && t < 1.0f; }},
+            {"umbra", all, [](float t, float) { return t == 0.0f; }},
+            {"lit", all, [](float t, float) { return t == 1.0f; }}};
   }
 
   void report(JsonWriter& json) const override {

@@ -142,12 +142,13 @@ struct PixelMeasures {
 
 // A part of the frame a lesson measures the error on by itself (lesson 10: the plane of
 // interest, region II): its name under the report's `error`, and whether a pixel is in it, by
-// the world position (xyz) and object index (w) it shows and, where `truth_inside` is given,
-// by the truth's visibility there (lesson 14: the penumbra, 0 < truth < 1).
+// the world position (xyz) and object index (w) it shows and, where `pixel_inside` is given,
+// by the truth's visibility there and the lesson's (lesson 14: the penumbra, 0 < truth < 1;
+// lesson 13: light bleeding, drawn lighter than the truth).
 struct ErrorRegion {
   std::string name;
   std::function<bool(glm::vec4 position)> inside;
-  std::function<bool(float truth)> truth_inside = {};
+  std::function<bool(float truth, float rendered)> pixel_inside = {};
 };
 
 class Lesson {

@@ -123,12 +123,17 @@ void Runner::writeReport(JsonWriter& json) {
     if (truth_.error().pixels && truth_.key() == errorKey()) {
       for (const ErrorRegion& region : lesson_->errorRegions()) {
         const ErrorMetrics r =
-            compareVisibilityIn(*truth_.error().pixels, region.inside, region.truth_inside);
+            compareVisibilityIn(*truth_.error().pixels, region.inside, region.pixel_inside);
         json.beginObject(region.name);
         json.value("counted_pixels", r.counted_pixels);
         json.value("false_shadow_pct", r.counted_pixels > 0 ? r.false_shadow_pct : kNoFigure);
         json.value("false_lit_pct", r.counted_pixels > 0 ? r.false_lit_pct : kNoFigure);
         json.value("vis_mae", r.counted_pixels > 0 ? r.vis_mae : kNoFigure);
+        // The region's share of the frame's counted pixels (lesson 13: how much light bleeds).
+        json.value("share_pct", e.counted_pixels > 0
+                                    ? 100.0 * static_cast<double>(r.counted_pixels) /
+                                          static_cast<double>(e.counted_pixels)
+                                    : kNoFigure);
         json.endObject();
       }
     }

@@ -55,9 +55,9 @@ std::string notCountedReason(const ErrorMetrics& m) {
                                : "no surface seen faces the light inside its frustum";
 }
 
-ErrorMetrics compareVisibilityIn(const ErrorPixels& pixels,
-                                 const std::function<bool(glm::vec4 position)>& inside,
-                                 const std::function<bool(float truth)>& truthInside) {
+ErrorMetrics compareVisibilityIn(
+    const ErrorPixels& pixels, const std::function<bool(glm::vec4 position)>& inside,
+    const std::function<bool(float truth, float rendered)>& pixelInside) {
   if (pixels.position.size() != pixels.truth.size()) {
     throw std::invalid_argument("compareVisibilityIn: positions and pixels differ in size");
   }
@@ -65,7 +65,8 @@ ErrorMetrics compareVisibilityIn(const ErrorPixels& pixels,
   std::vector<float> weight = pixels.weight;
   for (std::size_t i = 0; i < weight.size() && i < pixels.position.size(); ++i) {
     const glm::vec4 p = pixels.position[i];
-    if (p.w < 0.0f || !inside(p) || (truthInside && !truthInside(pixels.truth[i]))) {
+    if (p.w < 0.0f || !inside(p) ||
+        (pixelInside && !pixelInside(pixels.truth[i], pixels.rendered[i]))) {
       weight[i] = 0.0f;
     }
   }

@@ -154,11 +154,12 @@ struct ErrorPixels {
   std::vector<glm::vec4> position;             // world xyz, w the object (-1: no surface)
 };
 // compareVisibility over the counted pixels that show a surface `inside` says is in the region
-// (given the pixel's ErrorPixels::position) and, where given, whose truth `truthInside` takes
-// (lesson 14: the penumbra, 0 < truth < 1), the same definitions as the whole frame's.
-ErrorMetrics compareVisibilityIn(const ErrorPixels& pixels,
-                                 const std::function<bool(glm::vec4 position)>& inside,
-                                 const std::function<bool(float truth)>& truthInside = {});
+// (given the pixel's ErrorPixels::position) and, where given, whose truth and rendered
+// visibility `pixelInside` takes (lesson 14: the penumbra, 0 < truth < 1), the same
+// definitions as the whole frame's.
+ErrorMetrics compareVisibilityIn(
+    const ErrorPixels& pixels, const std::function<bool(glm::vec4 position)>& inside,
+    const std::function<bool(float truth, float rendered)>& pixelInside = {});
 
 AirMetrics compareAir(const std::vector<float>& rendered, const Truth::AirResult& truth);
 // The error view for air: red where the picture has too much air light, blue too little,
