@@ -105,6 +105,12 @@ const std::map<std::string, std::vector<std::string>> kActsWhen = {
     // 04's clamp is the gradient bias's; 05's taps are the grid's and Poisson's.
     {"bias.clamp", {"bias.mode=gradient"}},
     {"05_pcf_dithered/pcf.taps", {"pcf.mode=poisson"}},
+    // 13: the depth map, its bias and its filter are PCF's; the exponent ESM's.
+    {"13_filterable_maps/bias.factor", {"filter.method=pcf"}},
+    {"13_filterable_maps/bias.units", {"filter.method=pcf"}},
+    {"13_filterable_maps/shadow.filter", {"filter.method=pcf"}},
+    {"13_filterable_maps/shadow.format", with(kNearLight, {"filter.method=pcf"})},
+    {"13_filterable_maps/esm.c", {"filter.method=esm"}},
     // 14: the one width is the fixed mode's (pcss derives its own).
     {"14_soft_shadows/pcf.radius", {"pcss.mode=fixed"}},
     // How the copy is made shows in its counters, on frames that render the map.

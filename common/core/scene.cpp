@@ -448,6 +448,21 @@ Scene makeScene(const std::string& preset) {
                          {0.75f, 0.6f, 0.4f}});
     s.light = {false, {0.6f, 7.0f, 1.2f}, {0.0f, 0.3f, 0.2f}, 60.0f, 10.0f, 2.0f, 16.0f};
     s.camera = {{3.8f, 5.2f, 4.6f}, {0.0f, 0.2f, 0.1f}, 45.0f, 0.1f, 100.0f};
+  } else if (preset == "stacked") {
+    // Lesson 13: a brick on the floor inside the shadow of a board high above it. A filter over
+    // the brick's edge averages the board's depth with the brick's: the variance of two blockers
+    // at different depths, where variance shadow maps let light bleed into the board's umbra.
+    s.objects.push_back(floorObject(8.0f, 0.0f));
+    s.objects.push_back({"board",
+                         makeBox({1.3f, 0.03f, 1.3f}),
+                         translate({-0.7f, 2.4f, 0.5f}),
+                         {0.62f, 0.5f, 0.38f}});
+    s.objects.push_back({"brick",
+                         makeBox({0.35f, 0.2f, 0.25f}),
+                         translate({2.5f, 0.2f, -0.4f}),
+                         {0.7f, 0.35f, 0.3f}});
+    s.light = {false, {-3.0f, 6.5f, 2.0f}, {0.3f, 0.0f, -0.3f}, 60.0f, 10.0f, 2.0f, 16.0f};
+    s.camera = {{4.6f, 2.4f, 2.6f}, {1.9f, 0.1f, -0.5f}, 45.0f, 0.1f, 100.0f};
   } else if (preset == "room") {
     s = room();
   } else if (preset == "strategy") {

@@ -87,6 +87,12 @@ void allocate2D(GLenum internalFormat, int width, int height) {
     case GL_RG8:
       format = GL_RG;
       break;
+    case GL_RG32F:  // lesson 13's moments
+      format = GL_RG, type = GL_FLOAT;
+      break;
+    case GL_RG16F:
+      format = GL_RG, type = GL_HALF_FLOAT;
+      break;
     default:
       break;
   }

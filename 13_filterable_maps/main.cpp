@@ -1,0 +1,348 @@
+// Lesson 13: filterable shadow maps, variance (VSM, Donnelly and Lauritzen 2006) and
+// exponential (ESM, Annen et al. 2008) maps against lesson 05's PCF at the same filter width
+// (seed 002: "Variance shadow maps proposes a two-parameter family of approximation functions";
+// seed 003's further techniques).
+//
+// PCF filters the answers of compares, so it cannot blur the map once and reuse it: every
+// pixel pays its N x N taps. A filterable map stores something whose average still means
+// something, blurs it once per map (two passes of N taps), and answers with one lookup:
+//   VSM  stores z and z^2; the blurred pair is a mean and a variance, and Chebyshev's
+//        inequality bounds the fraction of the filter's texels at or beyond the receiver;
+//   ESM  stores exp(c z); the blur averages exponentials and exp(-c t) turns that into a
+//        soft compare that is exact where the receiver lies behind every blocker.
+// Seed 002's critique, measured: the two-parameter VSM is right for one blocker over one
+// receiver and bleeds light where two blockers at different depths share the filter.
+#include <imgui.h>
+
+#include <cstring>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "core/json.hpp"
+#include "lesson/lesson.hpp"
+#include "math/pcf_math.hpp"
+#include "shadow/area_match.hpp"
+#include "shadow/shadow_map.hpp"
+
+namespace shadows {
+
+namespace {
+const std::vector<std::string> kMethods = {"pcf", "vsm", "esm"};
+enum class Method { Pcf, Vsm, Esm };
+
+// Linear filtering of 32-bit float textures is an extension in OpenGL ES 3.0 and WebGL 2
+// (OES_texture_float_linear); 16-bit floats filter in ES 3.0 itself.
+bool floatLinearFilter() {
+  if (!caps().es) return true;
+  GLint n = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &n);
+  for (GLint i = 0; i < n; ++i) {
+    const auto* name =
+        reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
+    if (name != nullptr && std::strcmp(name, "GL_OES_texture_float_linear") == 0) return true;
+  }
+  return false;
+}
+}  // namespace
+
+class FilterableMaps final : public Lesson {
+ public:
+  std::string title() const override { return "Filterable maps: blur the map once (VSM, ESM)"; }
+  std::string seeds() const override {
+    return "seed 002: Variance shadow maps (two-parameter approximation, Deep Shadow Maps); "
+           "003: further techniques; 000: Percentage Closer filtering";
+  }
+  std::vector<std::string> debugViews() const override { return {"moments"}; }
+  std::vector<std::string> scenes() const override {
+    return {"stacked", "overlap", "torus_pyramid", "contact", "grazing", "dueling", "cubes"};
+  }
+
+  void declare(Params& p) override {
+    map_.declare(p);
+    method_ = p.addChoice("filter.method", kMethods, "vsm",
+                          "pcf: compare, then average (05); vsm: moments and Chebyshev; esm: "
+                          "exp(c z)",
+                          kDirtyShadowMap);
+    radius_ = p.addFloat("filter.radius", 4.0f, 0.0f, 16.0f,
+                         "the filter's half-width in texels, PCF's kernel and the blur alike");
+    taps_ = p.addInt("filter.taps", 5, 1, 8, "taps per axis: PCF N x N, the blur 2 passes of N");
+    bits_ = p.addChoice("moments.bits", {"32", "16"}, "32", "float bits of the stored moments",
+                        kDirtyShadowMap);
+    min_variance_ = p.addFloat("vsm.min_variance", 1e-5f, 0.0f, 1e-2f,
+                               "the least variance Chebyshev's bound assumes (against acne)")
+                        .logScale();
+    bleeding_ = p.addFloat("vsm.bleeding", 0.0f, 0.0f, 0.95f,
+                           "light-bleeding reduction: bounds under this count as shadow");
+    exponent_ = p.addFloat("esm.c", 40.0f, 1.0f, 80.0f, "ESM's exponent c", kDirtyShadowMap);
+    linear_filter_ = p.at("shadow.filter");
+    inset_ = p.at("inset");
+    dimming_ = p.addFloat("dimming", 0.4f, 0.0f, 1.0f,
+                          "diffuse left in shadow: dimming + (1-dimming)*shade");
+    // PCF's map is lesson 04's: back faces, plus glPolygonOffset(factor, units).
+    factor_ = p.addFloat("bias.factor", 1.1f, 0.0f, 20.0f, "PCF: glPolygonOffset factor",
+                         kDirtyShadowMap);
+    units_ =
+        p.addFloat("bias.units", 4.0f, 0.0f, 1e7f, "PCF: glPolygonOffset units", kDirtyShadowMap)
+            .logScale();
+  }
+
+  void init() override {
+    eye_programs_ = ProgramVariants(commonShaderDir() / "shadow_coord.vert",
+                                    lessonFile(LESSON_DIR, "scene.frag"));
+    moment_programs_ = ProgramVariants(lessonFile(LESSON_DIR, "moments.vert"),
+                                       lessonFile(LESSON_DIR, "moments.frag"));
+    blur_programs_ =
+        ProgramVariants(commonShaderDir() / "fullscreen.vert", lessonFile(LESSON_DIR, "blur.frag"));
+    compare_ = Sampler::depth(/*compare=*/true, GL_NEAREST);
+    linear_ = Sampler::depth(/*compare=*/true, GL_LINEAR);  // PCF with shadow.filter=linear
+    float_linear_ = floatLinearFilter();
+  }
+
+  void render(Frame& f) override {
+    // Without float colour targets (ES 3.0 without EXT_color_buffer_float) there is nothing to
+    // store moments in: PCF runs, and the report and panel say so, never a wrong picture.
+    method_used_ =
+        method_() != Method::Pcf && !caps().float_color_targets ? Method::Pcf : method_();
+    const Method method = method_used_;
+    const std::vector<std::string> method_defines =
+        choiceDefines("filter.method", kMethods, kMethods[static_cast<size_t>(method)]);
+    const bool pcf = method == Method::Pcf;
+    // 32-bit floats where they filter; else 16 bits, and the report says so.
+    bits_used_ = bits_.name() == "16" || !float_linear_ ? 16 : 32;
+    const bool rendered = map_.prepare(f, kDirtyNothing);
+    kernel_texels_ = taps_() > 1 ? radius_() : 0.0f;  // a 1-tap grid has no width (05)
+    match_ = matchAreaLight(f, map_, kernel_texels_);
+    f.truth_area_radius = match_.radius;
+    if (pcf) {
+      if (rendered) map_.renderCasters(f, ShadowMap::backFacesBias(factor_(), units_()));
+    } else {
+      const bool storage = ensureMoments(map_.width(), map_.height());
+      if (rendered || storage) renderMoments(f, method_defines);
+      // The blur is per map, not per frame: again only when the map or the blur changed.
+      const std::pair<float, int> blur{radius_(), taps_()};
+      if (rendered || storage || blur != blurred_with_) {
+        blurMoments(f);
+        blurred_with_ = blur;
+      }
+    }
+    f.measure.count("blur_passes", pcf ? 0 : blur_passes_);
+    blur_passes_ = 0;
+    if (f.mode == "moments") {
+      f.clearTarget();
+      if (!pcf) f.drawImageInset(moments_[kBlurred], /*fullscreen=*/true);
+      return;
+    }
+    auto timing = f.measure.pass("eye", /*countPassed=*/true);
+    f.clearTarget();
+    map_.texture().bind(0);
+    (linear_filter_.name() == "linear" ? linear_ : compare_).bind(0);
+    if (!pcf) moments_[kBlurred].bind(1);
+    const std::vector<glm::vec2> unit = pcf::unitTapOffsets(pcf::Mode::Grid, taps_() * taps_());
+    const Program& e =
+        eye_programs_.get({method_defines,
+                           choiceDefines("pcf.mode", pcf::kModeNames, "grid"),
+                           {defineVec2Array("PCF_UNIT_TAPS", unit),
+                            "PCF_TAP_COUNT " + std::to_string(unit.size()), "PCF_EARLY_OUT 0"},
+                           f.viewDefines(),
+                           define("SHADOW_OFF", map_.off())});
+    e.set("uViewProjection", f.projection * f.view);
+    e.set("uShadowMatrix", map_.textureMatrix());
+    e.set("uShadowMap", 0);
+    e.set("uMoments", 1);
+    e.set("uTexel", glm::vec2(1.0f / static_cast<float>(map_.width()),
+                              1.0f / static_cast<float>(map_.height())));
+    e.set("uRadius", radius_());
+    e.set("uExponent", exponent_());
+    e.set("uMinVariance", min_variance_());
+    e.set("uBleeding", bleeding_());
+    setDepthUniforms(f, e);
+    f.setLightingUniforms(e, dimming_());
+    f.drawObjects(e, Objects::All);
+    Sampler::unbind(0);
+    // The map in a corner: PCF's depths, or the blurred moments a filterable map looks up.
+    if (f.mode != "visibility") {
+      if (pcf) {
+        map_.drawInset(f);
+      } else if (inset_()) {
+        f.drawImageInset(moments_[kBlurred]);
+      }
+    }
+  }
+
+  void panel(Frame& f) override {
+    Params& p = f.params;
+    auto preset = [&](const char* label, const char* method) {
+      if (ImGui::Button(label)) p.setChoice(method_.param(), method);
+    };
+    preset("PCF (05)", "pcf");
+    ImGui::SameLine();
+    preset("VSM", "vsm");
+    ImGui::SameLine();
+    preset("ESM", "esm");
+    const int n = taps_();
+    if (method_used_ != method_()) {
+      ImGui::TextWrapped("no float colour targets here (%s): PCF runs instead",
+                         caps().flavour.c_str());
+    }
+    if (method_used_ == Method::Pcf) {
+      ImGui::TextWrapped("cost: %d taps a pixel, every frame", n * n);
+    } else {
+      ImGui::TextWrapped(
+          "cost: 1 lookup a pixel; the blur 2 x %d taps a texel, once per map "
+          "(moments %d-bit)",
+          n, bits_used_);
+    }
+    const ErrorState& error = f.runner.lastError();
+    if (error.valid) {
+      ImGui::TextWrapped("error: vis_mae %.4f against a disk light, r = %.3f",
+                         error.metrics.vis_mae, match_.radius);
+    }
+  }
+
+  // docs/EXERCISES.md has the intended solutions.
+  std::vector<Exercise> exercises() const override {
+    using B = Figure::Bound;
+    return {{.title = "One lookup for twenty-five taps",
+             .goal = "Lesson 05's PCF, 5 x 5 taps a pixel every frame: vis_mae 0.0124, false lit "
+                     "0.04 %. Keep vis_mae at 0.0130 or less and false lit at 0.1 % or less with "
+                     "one lookup a pixel.",
+             .setup = {"filter.method=pcf"},
+             .allowed = {"filter.method", "moments.bits", "esm.c", "vsm.min_variance"},
+             .figures = {{"/taps_per_pixel", "lookups a pixel", B::AtMost, 1},
+                         {"/error/vis_mae", "vis_mae", B::AtMost, 0.013},
+                         {"/error/false_lit_pct", "false lit %", B::AtMost, 0.1}},
+             .hint = "Which map can be blurred once and then read once? Two store moments; "
+                     "which one keeps the false lit down?"},
+            {.title = "Stop the bleeding, keep the penumbra (seed 002's halo)",
+             .goal = "A 512 map blurred over 8 texels: around the brick, light bleeds into the "
+                     "board's umbra (1.0 % of the pixels drawn 0.25 lighter than the truth). "
+                     "Bring that under 0.5 % and keep the penumbra's vis_mae at 0.175 or less, "
+                     "with one lookup a pixel.",
+             .setup = {"shadow.size=512", "filter.radius=8"},
+             .allowed = {"vsm.bleeding", "vsm.min_variance", "esm.c", "filter.method"},
+             .figures = {{"/error/bleeding/share_pct", "bleeding %", B::AtMost, 0.5},
+                         {"/error/penumbra/vis_mae", "penumbra vis_mae", B::AtMost, 0.175},
+                         {"/taps_per_pixel", "lookups a pixel", B::AtMost, 1}},
+             .hint = "Chebyshev's bound is too light where two blockers share the filter. Cut "
+                     "its lowest values off, and watch what that does to the penumbra."}};
+  }
+
+  // The truth's penumbra, umbra and lit area, as lesson 14 has them, and the light that bleeds:
+  // pixels drawn lighter than the truth by more than 0.25.
+  std::vector<ErrorRegion> errorRegions() const override {
+    const auto all = [](glm::vec4) { return true; };
+    return {{"penumbra", all, [](float t, float) { return t > 0.0f && t < 1.0f; }},
+            {"umbra", all, [](float t, float) { return t == 0.0f; }},
+            {"bleeding", all, [](float t, float r) { return r > t + 0.25f; }}};
+  }
+
+  void report(JsonWriter& json) const override {
+    json.value("truth_area_radius", match_.radius);
+    json.value("kernel_half_width_texels", kernel_texels_);
+    json.value("filter_method_used", kMethods[static_cast<size_t>(method_used_)]);
+    json.value("moments_bits_used", method_used_ == Method::Pcf ? 0 : bits_used_);
+    json.value("taps_per_pixel", method_used_ == Method::Pcf ? taps_() * taps_() : 1);
+  }
+
+ private:
+  // The moments' textures and their framebuffers: kRaw as rendered (the blur's source, kept so
+  // that a new blur starts from it), kAcross blurred along x, kBlurred along y too (looked up).
+  static constexpr int kBlurred = 0, kAcross = 1, kRaw = 2;
+  bool ensureMoments(int width, int height) {
+    const GLenum format = bits_used_ == 16 ? GL_RG16F : GL_RG32F;
+    if (moments_[kBlurred].width() == width && moments_[kBlurred].height() == height &&
+        format_ == format) {
+      return false;
+    }
+    format_ = format;
+    for (int k = 0; k < 3; ++k) {
+      moments_[k] = Texture::color(width, height, format);
+      moments_[k].setFilter(GL_LINEAR);
+      // Outside the map, nothing in front: z = 1, as a depth map's border (ES: the shader).
+      moments_[k].setWrap(GL_CLAMP_TO_BORDER, GL_CLAMP_TO_BORDER);
+      moments_[k].setBorder(glm::vec4(1.0f, 1.0f, 0.0f, 1.0f));
+      framebuffers_[k] = std::make_unique<Framebuffer>();
+      framebuffers_[k]->attachColor(moments_[k]);
+      if (k == kRaw) {
+        depth_ = Texture::depth(width, height, 24);
+        framebuffers_[k]->attachDepth(depth_);
+      }
+      framebuffers_[k]->check();
+    }
+    return true;
+  }
+
+  void setDepthUniforms(const Frame& f, const Program& program) const {
+    program.set("uMapLightPos", f.light.position);
+    program.set("uMapLightDir", f.light.direction);
+    program.set("uNear", map_.frustum().near);
+    program.set("uFar", map_.frustum().far);
+  }
+
+  // Pass 1: the moments from the light, both faces (a filtered map needs no bias).
+  void renderMoments(Frame& f, const std::vector<std::string>& methodDefines) {
+    auto timing = f.measure.pass("shadow");
+    Frame pass = f;
+    pass.target = framebuffers_[kRaw]->id();
+    pass.width = map_.width();
+    pass.height = map_.height();
+    pass.bindTarget();
+    glClearColor(1.0f, 1.0f, 0.0f, 1.0f);  // nothing in front: z = 1 and exp(c (1 - 1)) = 1
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    const Program& m = moment_programs_.get({methodDefines});
+    const glm::mat4 light = map_.lightViewProjection();
+    m.set("uLightViewProjection", light);
+    m.set("uExponent", exponent_());
+    setDepthUniforms(f, m);
+    // Every object, the floor too: a moment is an average over the filter's texels, and a
+    // texel the floor fills but the map leaves at the far plane would average in a depth
+    // behind every receiver, lighting the penumbra's outer half (PCF's compare does not care).
+    pass.drawObjects(m, Objects::Occluders, &light);
+  }
+
+  // The separable blur, x then y (raw -> across -> blurred): lesson 05's grid for 2N taps a
+  // texel.
+  void blurMoments(Frame& f) {
+    auto timing = f.measure.pass("blur");
+    const int n = taps_();
+    std::vector<glm::vec2> row;
+    for (int i = 0; i < n; ++i) row.push_back(pcf::gridOffsets(n, 1.0f)[static_cast<size_t>(i)]);
+    const Program& b = blur_programs_.get(
+        {{defineVec2Array("BLUR_UNIT_TAPS", row), "BLUR_TAPS " + std::to_string(n)}});
+    b.set("uRadius", radius_());
+    b.set("uSource", 0);
+    const glm::vec2 texel(1.0f / static_cast<float>(map_.width()),
+                          1.0f / static_cast<float>(map_.height()));
+    for (int axis = 0; axis < 2; ++axis) {
+      Frame pass = f;
+      pass.target = framebuffers_[axis == 0 ? kAcross : kBlurred]->id();
+      pass.width = map_.width();
+      pass.height = map_.height();
+      moments_[axis == 0 ? kRaw : kAcross].bind(0);
+      b.set("uAxis", axis == 0 ? glm::vec2(texel.x, 0.0f) : glm::vec2(0.0f, texel.y));
+      pass.drawFullscreen(b);
+      ++blur_passes_;
+    }
+  }
+
+  ShadowMap map_;
+  ProgramVariants eye_programs_, moment_programs_, blur_programs_;
+  Sampler compare_, linear_;
+  Texture moments_[3], depth_;
+  std::unique_ptr<Framebuffer> framebuffers_[3];
+  GLenum format_ = 0;
+  bool float_linear_ = true;
+  int bits_used_ = 32, blur_passes_ = 0;
+  std::pair<float, int> blurred_with_{-1.0f, 0};
+  float kernel_texels_ = 0;
+  AreaLightMatch match_;
+  ChoiceParam<Method> method_;
+  Method method_used_ = Method::Vsm;
+  ChoiceParam<> bits_, linear_filter_;
+  BoolParam inset_;
+  FloatParam radius_, min_variance_, bleeding_, exponent_, dimming_, factor_, units_;
+  IntParam taps_;
+};
+
+SHADOWS_LESSON(FilterableMaps);
+
+}  // namespace shadows

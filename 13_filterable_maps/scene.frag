@@ -1,0 +1,70 @@
+#version 430 core
+// Pass 2: the shadow term from a filterable map, or lesson 05's PCF as the reference, into
+// seed 000's illumination model with dimming. FILTER_METHOD (compiled per setting, main.cpp):
+//   PCF  compare first, then average (05's grid over +-uRadius texels, common/shaders/pcf.glsl);
+//   VSM  the blurred moments' mean and variance, and Chebyshev's bound on the lit fraction;
+//   ESM  the blurred exp(c (z - 1)) times exp(-c (t - 1)).
+#include "lighting.glsl"
+#include "pcf.glsl"
+#include "light_depth.glsl"
+
+in vec3 vWorld;
+in vec3 vNormal;
+in vec4 vShadowCoord;
+uniform vec3 uColor;
+uniform sampler2D uMoments;  // blurred, LINEAR
+uniform float uRadius;       // PCF: the kernel's half-width in texels
+uniform float uExponent;     // esm.c
+uniform float uMinVariance;  // vsm.min_variance
+uniform float uBleeding;     // vsm.bleeding: the lowest bound cut off and the rest rescaled
+out vec4 outColor;
+
+// Chebyshev's one-sided inequality: at most variance / (variance + (t - mean)^2) of the texels
+// the filter covered lie at or beyond t. VSM takes that bound as the lit fraction: exact for one
+// plane of blockers over one receiver, too light where a second blocker widens the variance
+// (light bleeding).
+float chebyshev(vec2 moments, float t) {
+  if (t <= moments.x) return 1.0;
+  float variance = max(moments.y - moments.x * moments.x, uMinVariance);
+  float d = t - moments.x;
+  float p = variance / (variance + d * d);
+  return clamp((p - uBleeding) / (1.0 - uBleeding), 0.0, 1.0);
+}
+
+float shadowTerm(vec3 n, vec3 toLight) {
+  // Facing away from the light (the geometric normal, as the truth sees it): in its own
+  // shadow, whatever the map says.
+  if (dot(n, toLight) <= 0.0) return 0.0;
+  vec4 c = vShadowCoord;
+  if (c.w <= 0.0) return 1.0;  // behind a spot light: outside its frustum
+  vec3 p = c.xyz / c.w;
+#if FILTER_METHOD == FILTER_METHOD_PCF
+  p.z = min(p.z, 1.0);  // beyond the far plane: every depth format clamps B to 1
+  return percentageCloser(p, uRadius);
+#else
+  if (outsideTexture(p.xy, vec2(textureSize(uMoments, 0)))) return 1.0;  // the border: lit
+  vec4 m = texture(uMoments, p.xy);
+  float t = lightDepth01(vWorld);
+  if (t >= 1.0) return 1.0;  // beyond the far plane the map holds nothing: lit, as PCF's clamp
+  t = max(t, 0.0);
+#if FILTER_METHOD == FILTER_METHOD_VSM
+  return chebyshev(m.xy, t);
+#else
+  return clamp(m.x * exp(uExponent * (1.0 - t)), 0.0, 1.0);
+#endif
+#endif
+}
+
+void main() {
+  vec3 n = normalize(cross(dFdx(vWorld), dFdy(vWorld)));  // geometric, facing the eye
+#if SHADOW_OFF
+  float shade = 1.0;  // shadow.off: the baseline, no lookup at all
+#else
+  float shade = shadowTerm(n, directionToLight(vWorld));
+#endif
+#if VIEW == VIEW_VISIBILITY
+  outColor = vec4(vec3(shade), 1.0);
+#else
+  outColor = vec4(shadeSurface(uColor, vWorld, normalize(vNormal), shade), 1.0);
+#endif
+}

@@ -1,0 +1,110 @@
+// Lesson 13 end to end, headless: filterable maps (VSM, ESM) against lesson 05's PCF at the
+// same filter width and the same matched area light. The golden and every view; VSM as close
+// to the truth as PCF for one lookup instead of N x N taps; the blur run once per map, not per
+// frame; ESM's exponent and its 16-bit break; the light-bleeding reduction trading bleeding for
+// darker penumbrae, as seed 002's critique says it must.
+#include "harness.hpp"
+
+namespace shadows {
+namespace {
+
+using testing::reportNumber;
+using testing::startLesson;
+
+const std::string kLesson = "13_filterable_maps";
+
+long long counter(Runner& runner, const std::string& name) {
+  const auto& counts = runner.measure().lastFrameCounts();
+  const auto it = counts.find(name);
+  EXPECT_NE(it, counts.end()) << name;
+  return it == counts.end() ? -1 : it->second;
+}
+
+TEST(Lesson13, SnapshotMatchesTheGolden) {
+  auto runner = startLesson(kLesson, {});
+  runner->renderFrame();
+  testing::expectMatchesGolden(runner->readImage(), kLesson);
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
+TEST(Lesson13, EveryViewOfEveryMethodIsCleanAndDistinct) {
+  for (const char* method : {"vsm", "esm"}) {
+    auto runner = startLesson(kLesson, {std::string("filter.method=") + method});
+    testing::expectEveryViewCleanAndDistinct(*runner, method);
+  }
+}
+
+// The report of one setting at 640x480, after the truth.
+nlohmann::ordered_json measured(const std::vector<std::string>& sets) {
+  auto runner = startLesson(kLesson, sets, 640, 480);
+  runner->renderFrame();
+  runner->measureError();
+  EXPECT_EQ(runner->glErrors(), 0);
+  return testing::report(*runner);
+}
+
+TEST(Lesson13, VarianceMapsMatchPcfForOneLookupInsteadOfTwentyFive) {
+  // Measured (README): stacked, vis_mae 0.0123 PCF, 0.0123 VSM; torus_pyramid 0.00215, 0.00212.
+  for (const char* scene : {"stacked", "torus_pyramid"}) {
+    const auto pcf = measured({std::string("scene=") + scene, "filter.method=pcf"});
+    const auto vsm = measured({std::string("scene=") + scene, "filter.method=vsm"});
+    EXPECT_EQ(pcf["taps_per_pixel"], 25) << scene;
+    EXPECT_EQ(vsm["taps_per_pixel"], 1) << scene;
+    // One truth: the same matched disk light for both.
+    EXPECT_EQ(pcf["truth_area_radius"], vsm["truth_area_radius"]) << scene;
+    const double p = pcf["error"]["vis_mae"], v = vsm["error"]["vis_mae"];
+    EXPECT_LT(v, 1.1 * p) << scene;
+    EXPECT_GT(v, 0.5 * p) << scene;
+  }
+}
+
+TEST(Lesson13, TheBlurRunsOncePerMapNotPerFrame) {
+  auto runner = startLesson(kLesson, {});
+  runner->renderFrame();  // the first frame renders the moments and blurs them
+  EXPECT_EQ(counter(*runner, "blur_passes"), 2);
+  runner->renderFrame();  // nothing moved: no map, no blur
+  EXPECT_EQ(counter(*runner, "blur_passes"), 0);
+  EXPECT_EQ(counter(*runner, "shadow_map_renders"), 0);
+  ASSERT_EQ(runner->params().assign("filter.radius=6"), "");
+  runner->renderFrame();  // a wider blur: the same moments blurred again
+  EXPECT_EQ(counter(*runner, "blur_passes"), 2);
+  EXPECT_EQ(counter(*runner, "shadow_map_renders"), 0);
+  ASSERT_EQ(runner->params().assign("vsm.min_variance=0.0001"), "");
+  runner->renderFrame();  // a lookup setting: neither
+  EXPECT_EQ(counter(*runner, "blur_passes"), 0);
+  ASSERT_EQ(runner->params().assign("filter.method=pcf"), "");
+  runner->renderFrame();  // PCF filters every frame and blurs nothing
+  EXPECT_EQ(counter(*runner, "blur_passes"), 0);
+}
+
+TEST(Lesson13, SixteenBitsBreakTheExponentialMapNotTheVarianceMap) {
+  // exp(c (z - 1)) with c = 40 falls under the smallest 16-bit float a few tenths of the depth
+  // range before the far plane: those texels read 0, as if a blocker touched every receiver.
+  const auto esm32 = measured({"filter.method=esm"});
+  const auto esm16 = measured({"filter.method=esm", "moments.bits=16"});
+  EXPECT_EQ(esm16["moments_bits_used"], 16);
+  EXPECT_LT(static_cast<double>(esm32["error"]["false_shadow_pct"]), 0.5);
+  EXPECT_GT(static_cast<double>(esm16["error"]["false_shadow_pct"]), 20.0);
+  const auto vsm16 = measured({"moments.bits=16"});
+  EXPECT_LT(static_cast<double>(vsm16["error"]["false_shadow_pct"]), 0.5);
+}
+
+TEST(Lesson13, BleedingReductionTradesBleedingForDarkerPenumbrae) {
+  const auto plain = measured({});
+  const auto reduced = measured({"vsm.bleeding=0.3"});
+  const double bleeding = plain["error"]["bleeding"]["share_pct"];
+  EXPECT_GT(bleeding, 0.05);
+  EXPECT_LT(static_cast<double>(reduced["error"]["bleeding"]["share_pct"]), 0.3 * bleeding);
+  EXPECT_GT(static_cast<double>(reduced["error"]["penumbra"]["vis_mae"]),
+            1.1 * static_cast<double>(plain["error"]["penumbra"]["vis_mae"]));
+}
+
+TEST(Lesson13, AWeakExponentLeaksLightThatAStrongOneHolds) {
+  const auto weak = measured({"filter.method=esm", "esm.c=10"});
+  const auto strong = measured({"filter.method=esm", "esm.c=80"});
+  EXPECT_GT(static_cast<double>(weak["error"]["false_lit_pct"]),
+            5.0 * static_cast<double>(strong["error"]["false_lit_pct"]));
+}
+
+}  // namespace
+}  // namespace shadows
