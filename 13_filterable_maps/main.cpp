@@ -9,12 +9,13 @@
 //   VSM  stores z and z^2; the blurred pair is a mean and a variance, and Chebyshev's
 //        inequality bounds the fraction of the filter's texels at or beyond the receiver;
 //   ESM  stores exp(c z); the blur averages exponentials and exp(-c t) turns that into a
-//        soft compare that is exact where the receiver lies behind every blocker.
+//        soft compare, exp(-c (t - z)) per texel: 1 at the receiver's own depth, near 0
+//        (never 0) behind a blocker far enough in front of it.
 // Seed 002's critique, measured: the two-parameter VSM is right for one blocker over one
 // receiver and bleeds light where two blockers at different depths share the filter.
 #include <imgui.h>
 
-#include <cstring>
+#include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/json.hpp"
@@ -29,19 +30,6 @@ namespace {
 const std::vector<std::string> kMethods = {"pcf", "vsm", "esm"};
 enum class Method { Pcf, Vsm, Esm };
 
-// Linear filtering of 32-bit float textures is an extension in OpenGL ES 3.0 and WebGL 2
-// (OES_texture_float_linear); 16-bit floats filter in ES 3.0 itself.
-bool floatLinearFilter() {
-  if (!caps().es) return true;
-  GLint n = 0;
-  glGetIntegerv(GL_NUM_EXTENSIONS, &n);
-  for (GLint i = 0; i < n; ++i) {
-    const auto* name =
-        reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
-    if (name != nullptr && std::strcmp(name, "GL_OES_texture_float_linear") == 0) return true;
-  }
-  return false;
-}
 }  // namespace
 
 class FilterableMaps final : public Lesson {
@@ -67,6 +55,9 @@ class FilterableMaps final : public Lesson {
     taps_ = p.addInt("filter.taps", 5, 1, 8, "taps per axis: PCF N x N, the blur 2 passes of N");
     bits_ = p.addChoice("moments.bits", {"32", "16"}, "32", "float bits of the stored moments",
                         kDirtyShadowMap);
+    mipmaps_ = p.addBool("moments.mipmaps", false,
+                         "mipmaps of the blurred moments: trilinear lookups, anisotropic where "
+                         "the GL has it");
     min_variance_ = p.addFloat("vsm.min_variance", 1e-5f, 0.0f, 1e-2f,
                                "the least variance Chebyshev's bound assumes (against acne)")
                         .logScale();
@@ -94,7 +85,6 @@ class FilterableMaps final : public Lesson {
         ProgramVariants(commonShaderDir() / "fullscreen.vert", lessonFile(LESSON_DIR, "blur.frag"));
     compare_ = Sampler::depth(/*compare=*/true, GL_NEAREST);
     linear_ = Sampler::depth(/*compare=*/true, GL_LINEAR);  // PCF with shadow.filter=linear
-    float_linear_ = floatLinearFilter();
   }
 
   void render(Frame& f) override {
@@ -107,7 +97,7 @@ class FilterableMaps final : public Lesson {
         choiceDefines("filter.method", kMethods, kMethods[static_cast<size_t>(method)]);
     const bool pcf = method == Method::Pcf;
     // 32-bit floats where they filter; else 16 bits, and the report says so.
-    bits_used_ = bits_.name() == "16" || !float_linear_ ? 16 : 32;
+    bits_used_ = bits_.name() == "16" || !caps().float_linear ? 16 : 32;
     const bool rendered = map_.prepare(f, kDirtyNothing);
     kernel_texels_ = taps_() > 1 ? radius_() : 0.0f;  // a 1-tap grid has no width (05)
     match_ = matchAreaLight(f, map_, kernel_texels_);
@@ -128,7 +118,11 @@ class FilterableMaps final : public Lesson {
     blur_passes_ = 0;
     if (f.mode == "moments") {
       f.clearTarget();
-      if (!pcf) f.drawImageInset(moments_[kBlurred], /*fullscreen=*/true);
+      if (!pcf) {
+        f.drawImageInset(moments_[kBlurred], /*fullscreen=*/true);
+      } else {
+        map_.drawInset(f, /*fullscreen=*/true);  // PCF has no moments: its depth map
+      }
       return;
     }
     auto timing = f.measure.pass("eye", /*countPassed=*/true);
@@ -240,6 +234,11 @@ class FilterableMaps final : public Lesson {
     json.value("kernel_half_width_texels", kernel_texels_);
     json.value("filter_method_used", kMethods[static_cast<size_t>(method_used_)]);
     json.value("moments_bits_used", method_used_ == Method::Pcf ? 0 : bits_used_);
+    // What the lookup filters with: the levels (1: bilinear; more: trilinear) and anisotropy.
+    json.value("moments_levels", method_used_ == Method::Pcf ? 0 : moments_[kBlurred].levels());
+    json.value("anisotropy_used", method_used_ != Method::Pcf && mipmaps_()
+                                      ? std::min(kAnisotropy, caps().max_anisotropy)
+                                      : 1.0f);
     json.value("taps_per_pixel", method_used_ == Method::Pcf ? taps_() * taps_() : 1);
   }
 
@@ -247,16 +246,22 @@ class FilterableMaps final : public Lesson {
   // The moments' textures and their framebuffers: kRaw as rendered (the blur's source, kept so
   // that a new blur starts from it), kAcross blurred along x, kBlurred along y too (looked up).
   static constexpr int kBlurred = 0, kAcross = 1, kRaw = 2;
+  static constexpr float kAnisotropy = 16.0f;
   bool ensureMoments(int width, int height) {
     const GLenum format = bits_used_ == 16 ? GL_RG16F : GL_RG32F;
+    const bool mipmapped = mipmaps_();
     if (moments_[kBlurred].width() == width && moments_[kBlurred].height() == height &&
-        format_ == format) {
+        format_ == format && (moments_[kBlurred].levels() > 1) == mipmapped) {
       return false;
     }
     format_ = format;
     for (int k = 0; k < 3; ++k) {
-      moments_[k] = Texture::color(width, height, format);
+      // The looked-up texture with its mipmaps when asked: trilinear where the map is
+      // minified (far from the eye), plus anisotropy along grazing views.
+      const bool levels = mipmapped && k == kBlurred;
+      moments_[k] = Texture::color(width, height, format, levels);
       moments_[k].setFilter(GL_LINEAR);
+      if (levels) moments_[k].setAnisotropy(kAnisotropy);
       // Outside the map, nothing in front: z = 1, as a depth map's border (ES: the shader).
       moments_[k].setWrap(GL_CLAMP_TO_BORDER, GL_CLAMP_TO_BORDER);
       moments_[k].setBorder(glm::vec4(1.0f, 1.0f, 0.0f, 1.0f));
@@ -278,7 +283,8 @@ class FilterableMaps final : public Lesson {
     program.set("uFar", map_.frustum().far);
   }
 
-  // Pass 1: the moments from the light, both faces (a filtered map needs no bias).
+  // Pass 1: the moments from the light, the runner's usual faces, no polygon offset (a
+  // filtered map needs no bias: the variance and the exponent soften the compare).
   void renderMoments(Frame& f, const std::vector<std::string>& methodDefines) {
     auto timing = f.measure.pass("shadow");
     Frame pass = f;
@@ -322,6 +328,7 @@ class FilterableMaps final : public Lesson {
       pass.drawFullscreen(b);
       ++blur_passes_;
     }
+    moments_[kBlurred].generateMipmaps();  // nothing without moments.mipmaps
   }
 
   ShadowMap map_;
@@ -330,7 +337,6 @@ class FilterableMaps final : public Lesson {
   Texture moments_[3], depth_;
   std::unique_ptr<Framebuffer> framebuffers_[3];
   GLenum format_ = 0;
-  bool float_linear_ = true;
   int bits_used_ = 32, blur_passes_ = 0;
   std::pair<float, int> blurred_with_{-1.0f, 0};
   float kernel_texels_ = 0;
@@ -338,7 +344,7 @@ class FilterableMaps final : public Lesson {
   ChoiceParam<Method> method_;
   Method method_used_ = Method::Vsm;
   ChoiceParam<> bits_, linear_filter_;
-  BoolParam inset_;
+  BoolParam inset_, mipmaps_;
   FloatParam radius_, min_variance_, bleeding_, exponent_, dimming_, factor_, units_;
   IntParam taps_;
 };

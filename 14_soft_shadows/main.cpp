@@ -163,6 +163,8 @@ class SoftShadows final : public Lesson {
     };
     if (f.measure.lastFrameUnavailable().count("pcf_taps") != 0) {
       ImGui::Text("cost:  taps %s", caps().unavailable().c_str());
+    } else if (!count_()) {
+      ImGui::TextWrapped("cost: not counted (pcss.count is off)");
     } else {
       const long long filtered = count("pcf_filtered_fragments");
       const long long searched = filtered + count("pcss_no_blocker") + count("pcss_all_blockers");
@@ -255,12 +257,15 @@ class SoftShadows final : public Lesson {
     return std::max(near_plane, nearest);
   }
 
-  // The search's Poisson points in the unit circle: lesson 05's disk, its first N (one point,
-  // the centre, for N = 1: a hard search).
+  // The search's Poisson points in the unit circle: lesson 05's disk, its first N. The disk
+  // starts on its rim, so 2 or 3 of its points would never look at the pixel's own texel and
+  // call a blocked pixel lit: under 4, the centre and then the rim.
   std::vector<glm::vec2> searchOffsets() const {
-    const int n = search_taps_();
-    if (n <= 1) return {glm::vec2(0.0f)};
-    return {pcf::poissonDisk().begin(), pcf::poissonDisk().begin() + n};
+    const auto n = static_cast<std::ptrdiff_t>(search_taps_());
+    if (n >= 4) return {pcf::poissonDisk().begin(), pcf::poissonDisk().begin() + n};
+    std::vector<glm::vec2> taps = {glm::vec2(0.0f)};
+    taps.insert(taps.end(), pcf::poissonDisk().begin(), pcf::poissonDisk().begin() + (n - 1));
+    return taps;
   }
 
   ShadowMap map_;

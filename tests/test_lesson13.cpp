@@ -89,6 +89,19 @@ TEST(Lesson13, SixteenBitsBreakTheExponentialMapNotTheVarianceMap) {
   EXPECT_LT(static_cast<double>(vsm16["error"]["false_shadow_pct"]), 0.5);
 }
 
+TEST(Lesson13, VarianceMapsBleedWherePcfDoesNot) {
+  // Seed 002's halo: a wide filter over the brick's edge inside the board's umbra. At the same
+  // width PCF lightens that floor too (its filter reaches the lit brick), VSM nearly twice as
+  // much (0.98 % of the pixels against 0.57 %).
+  const std::vector<std::string> wide = {"shadow.size=512", "filter.radius=8"};
+  auto with = [&](const std::string& method) {
+    std::vector<std::string> sets = wide;
+    sets.push_back("filter.method=" + method);
+    return static_cast<double>(measured(sets)["error"]["bleeding"]["share_pct"]);
+  };
+  EXPECT_GT(with("vsm"), 1.5 * with("pcf"));
+}
+
 TEST(Lesson13, BleedingReductionTradesBleedingForDarkerPenumbrae) {
   const auto plain = measured({});
   const auto reduced = measured({"vsm.bleeding=0.3"});
@@ -97,6 +110,18 @@ TEST(Lesson13, BleedingReductionTradesBleedingForDarkerPenumbrae) {
   EXPECT_LT(static_cast<double>(reduced["error"]["bleeding"]["share_pct"]), 0.3 * bleeding);
   EXPECT_GT(static_cast<double>(reduced["error"]["penumbra"]["vis_mae"]),
             1.1 * static_cast<double>(plain["error"]["penumbra"]["vis_mae"]));
+}
+
+TEST(Lesson13, MipmappedMomentsAreReadTrilinearAndNoWorse) {
+  // What a compare map cannot have: a filtered map's mipmaps. Every level down to 1x1, the
+  // lookup between them, and the shadow at least as close to the truth.
+  const auto plain = measured({});
+  const auto mipmapped = measured({"moments.mipmaps=true"});
+  EXPECT_EQ(plain["moments_levels"], 1);
+  EXPECT_EQ(mipmapped["moments_levels"], 11);  // 1024 .. 1
+  EXPECT_LE(static_cast<double>(mipmapped["error"]["vis_mae"]),
+            static_cast<double>(plain["error"]["vis_mae"]));
+  EXPECT_NE(mipmapped["error"]["vis_mae"], plain["error"]["vis_mae"]);
 }
 
 TEST(Lesson13, AWeakExponentLeaksLightThatAStrongOneHolds) {

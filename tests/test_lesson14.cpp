@@ -47,7 +47,7 @@ double penumbraError(const std::string& scene, const std::string& mode) {
 }
 
 TEST(Lesson14, TheBlockerSearchBeatsOneWidthAndAHardEdgeInThePenumbra) {
-  // Measured at 640x480 (README): contact 0.045 / 0.095 / 0.227, overlap 0.049 / 0.173 /
+  // Measured at 640x480 (README): contact 0.042 / 0.095 / 0.227, overlap 0.036 / 0.173 /
   // 0.229 for pcss / fixed at its best width (6 texels) / hard.
   for (const char* scene : {"contact", "overlap"}) {
     const double pcss = penumbraError(scene, "pcss");
@@ -56,6 +56,20 @@ TEST(Lesson14, TheBlockerSearchBeatsOneWidthAndAHardEdgeInThePenumbra) {
     EXPECT_LT(pcss, 0.6 * fixed) << scene;
     EXPECT_LT(fixed, 0.8 * hard) << scene;
   }
+}
+
+TEST(Lesson14, ADirectionalLightsConeIsSetAtTheReceiver) {
+  // A directional disk is a cone of directions set at the receiver (truth.cpp): the penumbra
+  // is R (z_r - z_b) / z_r, not / z_b. Measured on contact: PCSS 0.056, one width 0.145.
+  auto penumbra = [](const std::string& mode) {
+    auto runner = startLesson(kLesson, {"light.type=directional", "pcss.mode=" + mode}, 640, 480);
+    runner->renderFrame();
+    runner->measureError();
+    return reportNumber(*runner, "/error/penumbra/vis_mae");
+  };
+  const double pcss = penumbra("pcss"), fixed = penumbra("fixed");
+  EXPECT_LT(pcss, 0.07);
+  EXPECT_LT(pcss, 0.6 * fixed);
 }
 
 TEST(Lesson14, EveryFragmentIsSearchedAndThenFilteredOrSkippedOnce) {
@@ -82,6 +96,21 @@ TEST(Lesson14, EveryFragmentIsSearchedAndThenFilteredOrSkippedOnce) {
   EXPECT_EQ(counter(*runner, "pcss_all_blockers"), 0);
   EXPECT_EQ(counter(*runner, "pcf_filtered_fragments"), filtered + umbra);
   EXPECT_EQ(counter(*runner, "pcss_search_taps"), search);
+}
+
+TEST(Lesson14, FewSearchTapsStillLookAtThePixelsOwnTexel) {
+  // The Poisson disk starts on its rim: 2 or 3 of its points alone never read the pixel's own
+  // texel and call a blocked pixel lit. Fewer taps may band, not lose the shadow: each count
+  // from 1 to 4 no worse than one tap, a hard search.
+  double hard = 0;
+  for (int taps = 1; taps <= 4; ++taps) {
+    auto runner = startLesson(kLesson, {"pcss.search_taps=" + std::to_string(taps)}, 640, 480);
+    runner->renderFrame();
+    runner->measureError();
+    const double vis = reportNumber(*runner, "/error/vis_mae");
+    if (taps == 1) hard = vis;
+    EXPECT_LE(vis, hard) << taps;
+  }
 }
 
 TEST(Lesson14, SearchTapsAreTheSetting) {
@@ -158,7 +187,7 @@ TEST(Lesson14, ThePenumbraWidensWithTheDistanceFromTheContactAsTheTruthsDoes) {
   }
   EXPECT_GT(far_width[0], 2.0 * near_width[0]);  // the truth's penumbra grows
   for (const double* w : {near_width, far_width}) {
-    EXPECT_NEAR(w[1], w[0], 0.05) << "PCSS";
+    EXPECT_NEAR(w[1], w[0], 0.03) << "PCSS";
   }
   // The single width grows by less than half of the truth's growth.
   EXPECT_LT(far_width[2] - near_width[2], 0.5 * (far_width[0] - near_width[0]));

@@ -1,5 +1,7 @@
 #include "gl/caps.hpp"
 
+#include <cstring>
+
 #include "gl/gl_api.hpp"
 
 namespace shadows {
@@ -28,6 +30,30 @@ Caps ceiling() {
 }
 
 Caps g_caps = ceiling();
+
+// Whether the context lists an extension (glGetStringi: GL 3.0, ES 3.0, WebGL 2).
+bool hasGlExtension(const char* name) {
+  GLint n = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &n);
+  for (GLint i = 0; i < n; ++i) {
+    const auto* e =
+        reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
+    if (e != nullptr && std::strcmp(e, name) == 0) return true;
+  }
+  return false;
+}
+
+// The largest anisotropy the context filters with, 1 without the feature.
+float maxAnisotropy() {
+  if (!hasGlExtension("GL_EXT_texture_filter_anisotropic") &&
+      !hasGlExtension("GL_ARB_texture_filter_anisotropic")) {
+    return 1.0f;
+  }
+  constexpr GLenum kMaxMaxAnisotropy = 0x84FF;
+  GLfloat most = 1.0f;
+  glGetFloatv(kMaxMaxAnisotropy, &most);
+  return most;
+}
 
 #ifdef __EMSCRIPTEN__
 extern "C" void* emscripten_webgl1_get_proc_address(const char* name);
@@ -73,6 +99,9 @@ bool loadGl(GLADloadfunc load) {
   c.early_fragment_tests = GLAD_GL_VERSION_4_2 != 0;
 #endif
 #endif
+  c.max_anisotropy = maxAnisotropy();
+  // 32-bit float textures filter LINEAR on desktop GL; ES 3.0 and WebGL 2 need an extension.
+  c.float_linear = !c.es || hasGlExtension("GL_OES_texture_float_linear");
   g_caps = c;
   return true;
 }

@@ -30,6 +30,9 @@ struct Caps {
   bool depth_clamp = false;           // GL_DEPTH_CLAMP (GL 3.2; not in ES 3.0 nor WebGL 2)
   bool texture_swizzle = false;       // GL_TEXTURE_SWIZZLE_* (GL 3.3, ES 3.0; not WebGL 2):
                                       // else the image shader swizzles what it shows
+  bool float_linear = false;          // 32-bit float textures filter LINEAR (ES: an extension)
+  float max_anisotropy = 1.0f;        // anisotropic filtering (GL 4.6, EXT/ARB extensions):
+                                      // 1 = none, lookups are trilinear at best
 
   // "unavailable on gles30": what a report or panel says for a number this context lacks.
   std::string unavailable() const { return "unavailable on " + flavour; }

@@ -69,9 +69,9 @@ Texture Texture::depth(int width, int height, int bits) {
 namespace {
 // Storage for one level of a 2D texture: immutable where the API has it (GL 4.2, ES 3.0), else
 // glTexImage2D with the format and type that go with the internal format (GL 4.1).
-void allocate2D(GLenum internalFormat, int width, int height) {
+void allocate2D(GLenum internalFormat, int width, int height, int levels = 1) {
 #if SHADOWS_GL_VERSION >= 420 || SHADOWS_GLES
-  glTexStorage2D(GL_TEXTURE_2D, 1, internalFormat, width, height);
+  glTexStorage2D(GL_TEXTURE_2D, levels, internalFormat, width, height);
 #else
   GLenum format = GL_RGBA, type = GL_UNSIGNED_BYTE;
   switch (internalFormat) {
@@ -96,9 +96,12 @@ void allocate2D(GLenum internalFormat, int width, int height) {
     default:
       break;
   }
-  glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internalFormat), width, height, 0, format, type,
-               nullptr);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);  // complete with one level
+  for (int level = 0; level < levels; ++level) {
+    glTexImage2D(GL_TEXTURE_2D, level, static_cast<GLint>(internalFormat),
+                 std::max(1, width >> level), std::max(1, height >> level), 0, format, type,
+                 nullptr);
+  }
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, levels - 1);  // complete with these
 #endif
 }
 }  // namespace
@@ -121,9 +124,12 @@ Texture Texture::create(GLenum target, int width, int height) {
   return t;
 }
 
-Texture Texture::color(int width, int height, GLenum internalFormat) {
+Texture Texture::color(int width, int height, GLenum internalFormat, bool mipmapped) {
   Texture t = create(GL_TEXTURE_2D, width, height);
-  allocate2D(internalFormat, width, height);
+  int levels = 1;
+  while (mipmapped && std::max(width, height) >> levels > 0) ++levels;
+  t.levels_ = levels;
+  allocate2D(internalFormat, width, height, levels);
   t.setWrap(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
   t.setFilter(GL_LINEAR);
   return t;
@@ -194,8 +200,23 @@ void Texture::bind(int unit) const {
 void Texture::setFilter(GLenum minMag) {
   filter_ = minMag;
   glBindTexture(target_, name_.id());
-  glTexParameteri(target_, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(minMag));
+  // A mipmapped texture minifies between its levels (trilinear) when asked for LINEAR.
+  const GLenum min = levels_ > 1 && minMag == GL_LINEAR ? GL_LINEAR_MIPMAP_LINEAR : minMag;
+  glTexParameteri(target_, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(min));
   glTexParameteri(target_, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(minMag));
+}
+
+void Texture::generateMipmaps() const {
+  if (levels_ <= 1) return;
+  glBindTexture(target_, name_.id());
+  glGenerateMipmap(target_);
+}
+
+void Texture::setAnisotropy(float amount) const {
+  if (!(caps().max_anisotropy > 1.0f)) return;
+  constexpr GLenum kMaxAnisotropy = 0x84FE;  // GL 4.6 core, EXT/ARB_texture_filter_anisotropic
+  glBindTexture(target_, name_.id());
+  glTexParameterf(target_, kMaxAnisotropy, std::min(amount, caps().max_anisotropy));
 }
 
 Buffer::Buffer(GLenum target, GLsizeiptr bytes, const void* data, GLenum usage)

@@ -66,8 +66,9 @@ class Texture {
   static Texture depth(int width, int height, int bits);
   // Depth + stencil for the runner's own colour targets (GL_DEPTH24_STENCIL8).
   static Texture depthStencil(int width, int height);
-  // A colour texture: GL_RGBA8, GL_RGBA32F, GL_R8, ...
-  static Texture color(int width, int height, GLenum internalFormat);
+  // A colour texture: GL_RGBA8, GL_RGBA32F, GL_R8, ...; `mipmapped`: with every level down to
+  // 1x1, filled by generateMipmaps() (lesson 13's moments).
+  static Texture color(int width, int height, GLenum internalFormat, bool mipmapped = false);
   // A 1D texture (GL_R8, GL_RG8, ...) filled from `pixels` (`format`, unsigned bytes), read
   // NEAREST and clamped to its edge texels: a lookup table such as a ramp. Where there are no
   // 1D textures (OpenGL ES) a width x 1 2D texture, the same texels (common/shaders/ramp.glsl
@@ -77,6 +78,11 @@ class Texture {
   void upload(GLenum format, GLenum type, const void* pixels) const;
   void bind(int unit) const;
   void setFilter(GLenum minMag);
+  // The levels below the first from the first (a mipmapped texture's; nothing otherwise).
+  void generateMipmaps() const;
+  // Anisotropic filtering up to `amount` where the context has it (Caps::max_anisotropy).
+  void setAnisotropy(float amount) const;
+  int levels() const { return levels_; }
   // GL_CLAMP_TO_BORDER becomes GL_CLAMP_TO_EDGE where there is no border (Caps::border_clamp):
   // the shaders then test their lookups themselves (common/shaders/border.glsl).
   void setWrap(GLenum s, GLenum t) const;
@@ -103,7 +109,7 @@ class Texture {
   GLenum filter_ = GL_NEAREST_MIPMAP_LINEAR;  // the GL's default
   std::array<GLenum, 4> swizzle_{GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA};
   std::optional<glm::vec4> border_;
-  int width_ = 0, height_ = 0;
+  int width_ = 0, height_ = 0, levels_ = 1;
 };
 
 // A buffer object (vertex data, a uniform block, a pixel-pack buffer).
