@@ -67,7 +67,8 @@ class SoftShadows final : public Lesson {
     skip_umbra_ =
         p.addBool("pcss.skip_umbra", true, "every search tap a blocker: umbra, no filter");
     kernel_ = p.addChoice("pcf.kernel", kKernels, "poisson", "lesson 05's filter kernel");
-    taps_ = p.addInt("pcf.taps", 16, 1, 64, "grid: up to N x N of this; poisson: this many");
+    taps_ = p.addInt("pcf.taps", 16, 1, 64,
+                     "grid: up to N x N of this; poisson: this many (4 at least)");
     fixed_radius_ =
         p.addFloat("pcf.radius", 6.0f, 0.0f, 32.0f, "fixed: the kernel's one half-width in texels");
     filter_ = p.at("shadow.filter");  // the filter's compares: 2x2 bilinear each with linear
