@@ -88,10 +88,9 @@ class FilterableMaps final : public Lesson {
   }
 
   void render(Frame& f) override {
-    // Without float colour targets (ES 3.0 without EXT_color_buffer_float) there is nothing to
-    // store moments in: PCF runs, and the report and panel say so, never a wrong picture.
-    method_used_ =
-        method_() != Method::Pcf && !caps().float_color_targets ? Method::Pcf : method_();
+    // Float colour targets (the moments') are there wherever the runner runs: its truth needs
+    // them too (EXT_color_buffer_float on ES; the runner stops without).
+    method_used_ = method_();
     const Method method = method_used_;
     const std::vector<std::string> method_defines =
         choiceDefines("filter.method", kMethods, kMethods[static_cast<size_t>(method)]);
@@ -173,10 +172,6 @@ class FilterableMaps final : public Lesson {
     ImGui::SameLine();
     preset("ESM", "esm");
     const int n = taps_();
-    if (method_used_ != method_()) {
-      ImGui::TextWrapped("no float colour targets here (%s): PCF runs instead",
-                         caps().flavour.c_str());
-    }
     if (method_used_ == Method::Pcf) {
       ImGui::TextWrapped("cost: %d taps a pixel, every frame", n * n);
     } else {
@@ -232,7 +227,6 @@ class FilterableMaps final : public Lesson {
   void report(JsonWriter& json) const override {
     json.value("truth_area_radius", match_.radius);
     json.value("kernel_half_width_texels", kernel_texels_);
-    json.value("filter_method_used", kMethods[static_cast<size_t>(method_used_)]);
     json.value("moments_bits_used", method_used_ == Method::Pcf ? 0 : bits_used_);
     // What the lookup filters with: the levels (1: bilinear; more: trilinear) and anisotropy.
     json.value("moments_levels", method_used_ == Method::Pcf ? 0 : moments_[kBlurred].levels());

@@ -124,6 +124,37 @@ TEST(Lesson13, MipmappedMomentsAreReadTrilinearAndNoWorse) {
   EXPECT_NE(mipmapped["error"]["vis_mae"], plain["error"]["vis_mae"]);
 }
 
+// A driver without a feature, as a laptop's may be: SHADOWS_TEST_CAPS_OFF switches it off in the
+// GL context's caps for one runner (common/gl/caps.cpp).
+struct CapsOff {
+  explicit CapsOff(const char* names) { setenv("SHADOWS_TEST_CAPS_OFF", names, 1); }
+  ~CapsOff() { unsetenv("SHADOWS_TEST_CAPS_OFF"); }
+};
+
+TEST(Lesson13, WithoutFloatFilteringTheMomentsAre16BitsAndSaySo) {
+  nlohmann::ordered_json report;
+  Image fallback;
+  {
+    const CapsOff off("float_linear,anisotropy");
+    auto runner = startLesson(kLesson, {"moments.mipmaps=true"});
+    runner->renderFrame();
+    report = testing::report(*runner);
+    fallback = runner->readImage();
+    EXPECT_EQ(runner->glErrors(), 0);
+  }
+  EXPECT_EQ(report["moments_bits_used"], 16);
+  EXPECT_EQ(report["anisotropy_used"], 1.0);
+  // The very picture an explicit 16-bit run draws (trilinear, no anisotropy).
+  Image asked;
+  {
+    const CapsOff off("anisotropy");
+    auto runner = startLesson(kLesson, {"moments.mipmaps=true", "moments.bits=16"});
+    runner->renderFrame();
+    asked = runner->readImage();
+  }
+  EXPECT_EQ(testing::pixelsDiffering(fallback, asked, 0), 0u);
+}
+
 TEST(Lesson13, AWeakExponentLeaksLightThatAStrongOneHolds) {
   const auto weak = measured({"filter.method=esm", "esm.c=10"});
   const auto strong = measured({"filter.method=esm", "esm.c=80"});
