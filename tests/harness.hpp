@@ -121,6 +121,14 @@ inline nlohmann::ordered_json reportValue(Runner& runner, const std::string& key
   return found.empty() ? nlohmann::ordered_json() : found.front();
 }
 
+// One work counter of the last frame (-1, and a failure, when the frame did not count it).
+inline long long counter(Runner& runner, const std::string& name) {
+  const auto& counts = runner.measure().lastFrameCounts();
+  const auto it = counts.find(name);
+  EXPECT_NE(it, counts.end()) << name;
+  return it == counts.end() ? -1 : it->second;
+}
+
 // A number from the lesson's --report.
 inline double reportNumber(Runner& runner, const std::string& key) {
   const nlohmann::ordered_json v = reportValue(runner, key);

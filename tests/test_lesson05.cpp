@@ -12,18 +12,12 @@
 namespace shadows {
 namespace {
 
+using testing::counter;
 using testing::label;
 using testing::reportNumber;
 using testing::startLesson;
 
 const std::string kLesson = "05_pcf_dithered";
-
-long long counter(Runner& runner, const std::string& name) {
-  const auto& counts = runner.measure().lastFrameCounts();
-  const auto it = counts.find(name);
-  EXPECT_NE(it, counts.end()) << name;
-  return it == counts.end() ? -1 : it->second;
-}
 
 TEST(Lesson05, SnapshotMatchesTheGolden) {
   // Defaults (4 dithered taps over +-2 texels, dimming 0.4) on a 256² map, so the penumbrae

@@ -8,17 +8,11 @@
 namespace shadows {
 namespace {
 
+using testing::counter;
 using testing::reportNumber;
 using testing::startLesson;
 
 const std::string kLesson = "13_filterable_maps";
-
-long long counter(Runner& runner, const std::string& name) {
-  const auto& counts = runner.measure().lastFrameCounts();
-  const auto it = counts.find(name);
-  EXPECT_NE(it, counts.end()) << name;
-  return it == counts.end() ? -1 : it->second;
-}
 
 TEST(Lesson13, SnapshotMatchesTheGolden) {
   auto runner = startLesson(kLesson, {});

@@ -11,17 +11,11 @@
 namespace shadows {
 namespace {
 
+using testing::counter;
 using testing::reportNumber;
 using testing::startLesson;
 
 const std::string kLesson = "14_soft_shadows";
-
-long long counter(Runner& runner, const std::string& name) {
-  const auto& counts = runner.measure().lastFrameCounts();
-  const auto it = counts.find(name);
-  EXPECT_NE(it, counts.end()) << name;
-  return it == counts.end() ? -1 : it->second;
-}
 
 TEST(Lesson14, SnapshotMatchesTheGolden) {
   auto runner = startLesson(kLesson, {});
