@@ -90,8 +90,7 @@ class FilterableMaps final : public Lesson {
   void render(Frame& f) override {
     // Float colour targets (the moments') are there wherever the runner runs: its truth needs
     // them too (EXT_color_buffer_float on ES; the runner stops without).
-    method_used_ = method_();
-    const Method method = method_used_;
+    const Method method = method_();
     const std::vector<std::string> method_defines =
         choiceDefines("filter.method", kMethods, kMethods[static_cast<size_t>(method)]);
     const bool pcf = method == Method::Pcf;
@@ -172,7 +171,7 @@ class FilterableMaps final : public Lesson {
     ImGui::SameLine();
     preset("ESM", "esm");
     const int n = taps_();
-    if (method_used_ == Method::Pcf) {
+    if (method_() == Method::Pcf) {
       ImGui::TextWrapped("cost: %d taps a pixel, every frame", n * n);
     } else {
       ImGui::TextWrapped(
@@ -227,13 +226,13 @@ class FilterableMaps final : public Lesson {
   void report(JsonWriter& json) const override {
     json.value("truth_area_radius", match_.radius);
     json.value("kernel_half_width_texels", kernel_texels_);
-    json.value("moments_bits_used", method_used_ == Method::Pcf ? 0 : bits_used_);
+    json.value("moments_bits_used", method_() == Method::Pcf ? 0 : bits_used_);
     // What the lookup filters with: the levels (1: bilinear; more: trilinear) and anisotropy.
-    json.value("moments_levels", method_used_ == Method::Pcf ? 0 : moments_[kBlurred].levels());
-    json.value("anisotropy_used", method_used_ != Method::Pcf && mipmaps_()
+    json.value("moments_levels", method_() == Method::Pcf ? 0 : moments_[kBlurred].levels());
+    json.value("anisotropy_used", method_() != Method::Pcf && mipmaps_()
                                       ? std::min(kAnisotropy, caps().max_anisotropy)
                                       : 1.0f);
-    json.value("taps_per_pixel", method_used_ == Method::Pcf ? taps_() * taps_() : 1);
+    json.value("taps_per_pixel", method_() == Method::Pcf ? taps_() * taps_() : 1);
   }
 
  private:
@@ -336,7 +335,6 @@ class FilterableMaps final : public Lesson {
   float kernel_texels_ = 0;
   AreaLightMatch match_;
   ChoiceParam<Method> method_;
-  Method method_used_ = Method::Vsm;
   ChoiceParam<> bits_, linear_filter_;
   BoolParam inset_, mipmaps_;
   FloatParam radius_, min_variance_, bleeding_, exponent_, dimming_, factor_, units_;
