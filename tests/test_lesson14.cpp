@@ -32,8 +32,10 @@ TEST(Lesson14, EveryViewIsCleanAndDistinct) {
 }
 
 // The penumbra's vis_mae (the truth strictly between 0 and 1) of one mode.
-double penumbraError(const std::string& scene, const std::string& mode) {
-  auto runner = startLesson(kLesson, {"scene=" + scene, "pcss.mode=" + mode}, 640, 480);
+double penumbraError(const std::string& scene, const std::string& mode,
+                     const std::string& kernel = "poisson") {
+  auto runner = startLesson(
+      kLesson, {"scene=" + scene, "pcss.mode=" + mode, "pcf.kernel=" + kernel}, 640, 480);
   runner->renderFrame();
   runner->measureError();
   EXPECT_GT(reportNumber(*runner, "/error/penumbra/counted_pixels"), 2000) << scene;
@@ -49,6 +51,11 @@ TEST(Lesson14, TheBlockerSearchBeatsOneWidthAndAHardEdgeInThePenumbra) {
     const double hard = penumbraError(scene, "hard");
     EXPECT_LT(pcss, 0.6 * fixed) << scene;
     EXPECT_LT(fixed, 0.8 * hard) << scene;
+    // The filter draws the edge: 05's 4x4 grid, 16 taps too, beats 16 Poisson points
+    // (README: 0.036 against 0.042 on contact).
+    if (std::string(scene) == "contact") {
+      EXPECT_LT(penumbraError(scene, "pcss", "grid"), 0.95 * pcss);
+    }
   }
 }
 

@@ -133,7 +133,8 @@ INSTANTIATE_TEST_SUITE_P(
         SameCase{"09_shadow_volumes",
                  {},
                  "volume.geometry=per_triangle",
-                 "a volume per triangle: the same count, 50 times the triangles"}),
+                 "a volume per triangle: the same count, 50 times the triangles"},
+        SameCase{"14_soft_shadows", {}, "pcss.count=false", "the taps not counted"}),
     [](const ::testing::TestParamInfo<SameCase>& test) {
       return testName(test.param.lesson.substr(0, 2) + "_" + test.param.set);
     });
