@@ -49,7 +49,7 @@ void Bench::run(benchmark::State& state, size_t index) {
       const ErrorState& e = r.measureError();
       result.error = e.metrics;
       result.error_valid = e.valid;
-      if (const auto* texels = r.measureTexels()) {
+      if (const auto* texels = r.texels().measure()) {
         result.undersampled_pct = texelStats(*texels).undersampled_pct;
       }
     }

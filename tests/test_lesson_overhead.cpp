@@ -11,17 +11,17 @@ TEST(Overhead, TheBaselineFrameRendersNoMapAndLeavesTheLessonsFrameAsItWas) {
   auto runner = testing::startLesson("03_shadow_map_basic", {}, 160, 120);
   runner->renderFrame();
   const Image before = runner->readImage();
-  runner->renderBaselineFrame();  // the first compiles the unshadowed variant: not timed
-  EXPECT_EQ(runner->baselineMeasure().timedFrames(), 0u);
-  runner->renderBaselineFrame();
-  EXPECT_EQ(runner->baselineMeasure().timedFrames(), 1u);
-  EXPECT_EQ(runner->baselineMeasure().lastFrameCounts().at("shadow_map_renders"), 0);
-  EXPECT_TRUE(runner->baselineMeasure().lastFrameWork().count("eye"));
+  runner->baseline().render();  // the first compiles the unshadowed variant: not timed
+  EXPECT_EQ(runner->baseline().measure().timedFrames(), 0u);
+  runner->baseline().render();
+  EXPECT_EQ(runner->baseline().measure().timedFrames(), 1u);
+  EXPECT_EQ(runner->baseline().measure().lastFrameCounts().at("shadow_map_renders"), 0);
+  EXPECT_TRUE(runner->baseline().measure().lastFrameWork().count("eye"));
   EXPECT_FALSE(runner->params().at("shadow.off").b());
   runner->renderFrame();
   EXPECT_EQ(runner->measure().lastFrameCounts().at("shadow_map_renders"), 0) << "still cached";
   EXPECT_EQ(testing::pixelsDiffering(runner->readImage(), before, 0), 0u);
-  EXPECT_GT(runner->shadowOverhead(), 0.0);
+  EXPECT_GT(runner->baseline().overhead(), 0.0);
   EXPECT_EQ(runner->glErrors(), 0);
 }
 
@@ -30,7 +30,7 @@ TEST(Overhead, AChangeMadeBeforeTheBaselineFrameStillRendersTheMap) {
   runner->renderFrame();
   ASSERT_EQ(runner->params().set("light.pos", "2,7,3"), "");
   ASSERT_EQ(runner->params().set("shadow.size", "512"), "");
-  runner->renderBaselineFrame();  // must not swallow the dirty map
+  runner->baseline().render();  // must not swallow the dirty map
   runner->renderFrame();
   EXPECT_EQ(runner->measure().lastFrameCounts().at("shadow_map_renders"), 1);
   auto fresh =
@@ -42,10 +42,10 @@ TEST(Overhead, AChangeMadeBeforeTheBaselineFrameStillRendersTheMap) {
 TEST(Overhead, LessonsWithoutABaselineHaveNone) {
   auto runner = testing::startLesson("01_projected_planar", {}, 160, 120);
   runner->renderFrame();
-  runner->renderBaselineFrame();
-  runner->renderBaselineFrame();
-  EXPECT_EQ(runner->baselineMeasure().timedFrames(), 0u);
-  EXPECT_EQ(runner->shadowOverhead(), 0.0);
+  runner->baseline().render();
+  runner->baseline().render();
+  EXPECT_EQ(runner->baseline().measure().timedFrames(), 0u);
+  EXPECT_EQ(runner->baseline().overhead(), 0.0);
 }
 
 }  // namespace

@@ -39,7 +39,7 @@ TEST(Texels, StraightDownIsMapSizeOverFrameSizeAlongBothAxes) {
   for (const int map : {64, 120, 240}) {
     auto runner = startLesson("03_shadow_map_basic", straightDown(map), kRows, kRows);
     runner->renderFrame();
-    const std::vector<TexelPixel>* pixels = runner->measureTexels();
+    const std::vector<TexelPixel>* pixels = runner->texels().measure();
     ASSERT_NE(pixels, nullptr);
     const TexelStats floor = texelStats(*pixels, /*floor=*/0);
     const float expected = static_cast<float>(map) / kRows;

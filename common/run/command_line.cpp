@@ -174,7 +174,7 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
     // A verdict is a headless run measured against the truth, at the READMEs' size.
     o.headless = true;
     o.truth = true;
-    if (!o.size_given) o.width = Runner::kExerciseWidth, o.height = Runner::kExerciseHeight;
+    if (!o.size_given) o.width = kExerciseWidth, o.height = kExerciseHeight;
   }
   if (o.exercise > 0 && !o.truth) {
     return "--exercise judges by the truth: it cannot run with --no-truth";

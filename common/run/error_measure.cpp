@@ -47,52 +47,6 @@ std::vector<float> Runner::renderRed(const std::string& mode) {
   return red;
 }
 
-void Runner::drawTexels(const Frame& frame, bool heatmap) {
-  if (!frame.shadow_sampling) return;  // no map this frame (shadow.off): the lesson's picture
-  const ShadowSampling& map = *frame.shadow_sampling;
-  resetGlState();
-  if (heatmap) {
-    frame.clearTarget();
-  } else {
-    frame.bindTarget();
-    glClearColor(0, 0, 0, 0);  // z = 0: not counted
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  }
-  const Program& p = heatmap ? gpu_->texel_heatmap : gpu_->texel_raw;
-  p.use();
-  p.set("uViewProjection", frame.projection * frame.view);
-  p.set("uShadowMatrix", map.texture_matrix);
-  p.set("uMapSize", glm::vec2(map.map_size));
-  p.set("uTolerance", kTexelTolerance);
-  frame.setLightingUniforms(p, 0.0f);
-  drawObjects(frame, p, Objects::All, nullptr);
-  resetGlState();
-}
-
-const std::vector<TexelPixel>* Runner::measureTexels() {
-  std::string key = errorKey();
-  if (key != texels_.key) {
-    const int w = options_.width, h = options_.height;
-    gpu_->ensureTargets(w, h);
-    const GLuint fbo = gpu_->float_target->id();
-    if (!texels_.measure) texels_.measure = std::make_unique<Measure>();
-    std::swap(measure_, texels_.measure);
-    renderInto(fbo, w, h, "texels", /*timed=*/true, false);
-    std::swap(measure_, texels_.measure);
-    texels_.pixels.clear();
-    texels_.stats.reset();
-    if (told_.shadow_sampling) {
-      texels_.pixels.resize(static_cast<size_t>(w) * h);
-      glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-      glReadBuffer(GL_COLOR_ATTACHMENT0);
-      glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, texels_.pixels.data());
-      texels_.stats = texelStats(texels_.pixels);
-    }
-    texels_.key = std::move(key);
-  }
-  return texels_.stats ? &texels_.pixels : nullptr;
-}
-
 std::string Runner::errorKey() const {
   // Everything that can change the picture: every parameter but the view, and the size.
   std::string key = std::to_string(options_.width) + "x" + std::to_string(options_.height);
@@ -118,7 +72,7 @@ TruthInputs Runner::gatherTruthInputs() {
   const bool was_enabled = measure_->enabled();
   measure_->setEnabled(false);
 
-  measureTexels();  // what the panel shows next to the error, measured when it is
+  texels_.measure();  // what the panel shows next to the error, measured when it is
   // The lesson's shadow term, and its shaded picture in float to catch NaN and Inf.
   in.rendered = renderVisibility();
   const GLuint fbo = gpu_->float_target->id();
@@ -187,10 +141,6 @@ TruthInputs Runner::gatherTruthInputs() {
   }
   measure_->setEnabled(was_enabled);
   return in;
-}
-
-bool Runner::haveTruth() {
-  return kHaveTruth && truthTracerAvailable();
 }
 
 const ErrorState& Runner::measureError() {

@@ -13,6 +13,10 @@ namespace shadows {
 
 class Runner;
 
+// The picture an exercise is judged on, everywhere: --grade, a window or a page with an
+// exercise chosen (fragment counts and texels per pixel depend on the picture's size).
+inline constexpr int kExerciseWidth = 640, kExerciseHeight = 480;
+
 class ExerciseRun {
  public:
   explicit ExerciseRun(Runner& runner) : runner_(runner) {}

@@ -164,9 +164,8 @@ int ExerciseRun::grade() {
   const std::string& name = runner_.name_;
   const int n = runner_.options_.exercise;
   if (!runner_.truth_.error().valid) {
-    std::printf(
-        "%s exercise %d: no verdict: %s\n", name.c_str(), n,
-        Runner::haveTruth() ? "the truth was not measured" : Runner::truthUnavailable().c_str());
+    std::printf("%s exercise %d: no verdict: %s\n", name.c_str(), n,
+                haveTruth() ? "the truth was not measured" : truthUnavailable().c_str());
     return 1;
   }
   // On the numbers of the last frame, as the report written just before has them.

@@ -28,7 +28,7 @@ namespace shadows {
 void Runner::writeReport(JsonWriter& json) {
   // Where the map's texels land (texel_density.hpp), for lessons with a map this frame:
   // measured first, so the GL errors and compiled variants below include its frame.
-  const bool texels = measureTexels() != nullptr;
+  const bool texels = texels_.measure() != nullptr;
   json.beginObject();
   json.value("lesson", name_);
   json.value("renderer", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
@@ -52,9 +52,9 @@ void Runner::writeReport(JsonWriter& json) {
   json.value("light_on_surface", lightOnSurface());
   json.value("frame_ms", measure_->medianFrameMs());
   // What the shadow costs: the same frame with shadow.off, timed in the same run.
-  if (baseline_.measure && baseline_.measure->timedFrames() > 0) {
-    json.value("baseline_frame_ms", baseline_.measure->medianFrameMs());
-    json.value("shadow_overhead", shadowOverhead());
+  if (baseline_.timedFrames() > 0) {
+    json.value("baseline_frame_ms", baseline_.measure().medianFrameMs());
+    json.value("shadow_overhead", baseline_.overhead());
   }
   json.beginObject("pass_ms");
   for (const auto& [pass, ms] : measure_->medianPassMs()) json.value(pass, ms);
@@ -89,7 +89,7 @@ void Runner::writeReport(JsonWriter& json) {
   json.value("shader_variants_compiled", ProgramVariants::compiledTotal() - compiled_at_start_);
   lesson_->report(json);
   if (texels) {
-    const TexelStats& t = *texels_.stats;
+    const TexelStats& t = *texels_.stats();
     writeTexelsPerPixel(json, t);
     json.value("undersampled_pct", t.pixels > 0 ? t.undersampled_pct : kNoFigure);
   }
@@ -139,7 +139,7 @@ void Runner::writeReport(JsonWriter& json) {
     }
     json.endObject();
   }
-  lesson_->reportPixels(json, {options_.width, options_.height, measureTexels()});
+  lesson_->reportPixels(json, {options_.width, options_.height, texels_.measure()});
   // The exercise's verdict on these very numbers (lesson/exercise.hpp), last: it reads them.
   if (exercise_.chosen() && truth_.error().valid) {
     const Exercise& ex = *exercise_.chosen();
@@ -240,14 +240,14 @@ int Runner::runHeadless() {
   }
   initHeadless();
   renderFrame();  // warm-up: shader JIT and the first shadow map land here
-  renderBaselineFrame();
+  baseline_.render();
   // A snapshot with the panel should show the error numbers, so measure them first.
   if (options_.panel && options_.truth) measureError();
   measure_->clearHistory();
-  baseline_.measure->clearHistory();
+  baseline_.measure().clearHistory();
   for (int i = 0; i < options_.frames; ++i) {
-    renderBaselineFrame();  // interleaved with the frames it is compared with; first, as the
-    renderFrame();          // picture is read from the same target
+    baseline_.render();  // interleaved with the frames it is compared with; first, as the
+    renderFrame();       // picture is read from the same target
   }
   // The panel shows the run's medians, the numbers the report gives: it is drawn once more,
   // untimed, after the last timed frame.
@@ -263,7 +263,7 @@ int Runner::runHeadless() {
   if (const auto it = counts.find("shadow_map_renders"); it != counts.end() && it->second == 0) {
     std::printf(" (map cached)");
   }
-  if (const double overhead = shadowOverhead(); overhead > 0.0) {
+  if (const double overhead = baseline_.overhead(); overhead > 0.0) {
     std::printf(", %.2fx without shadow", overhead);
   }
   const ErrorState& error = truth_.error();

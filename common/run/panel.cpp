@@ -38,9 +38,9 @@ std::string Runner::costSummary() const {
   // is noise, so a page gives none (the native lesson measures it).
   summary += "\nshadow's cost: this browser cannot time the frame (run the lesson natively)";
 #endif
-  if (const double overhead = shadowOverhead(); overhead > 0.0) {
+  if (const double overhead = baseline_.overhead(); overhead > 0.0) {
     std::snprintf(line, sizeof line, "\nshadow: %.2fx the frame without it (%.2f ms)", overhead,
-                  baseline_.measure->medianFrameMs());
+                  baseline_.measure().medianFrameMs());
     summary += line;
   }
   return summary;
@@ -55,15 +55,6 @@ std::string Runner::counterSummary() const {
     counts += (counts.empty() ? "" : ", ") + name + " " + caps().unavailable();
   }
   return counts;
-}
-
-std::string Runner::truthUnavailable() {
-  if (!kHaveTruth) return std::string(kNoTruthNote) + ": the truth and error views are empty";
-  if (!truthTracerAvailable()) {
-    return "the page could not load its ray tracer (web/truth): the truth and error views are "
-           "empty";
-  }
-  return "";
 }
 
 bool RunnerWindow::panelDue(int width, int height) {
@@ -145,43 +136,6 @@ void RunnerWindow::laySavedPanel(const Frame& frame) {
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
-}
-
-void Runner::drawTexelLegend() const {
-  // The aliasing view's colours (common/shaders/texel_density.frag's TEXEL_HEATMAP, mirrored
-  // here) along texels per pixel on the least sampled axis, 1/8 to 8 on a log scale.
-  const auto colour = [](float e) {  // e = log2(texels per pixel)
-    const float t = std::clamp(std::abs(e) / 3.0f, 0.0f, 1.0f);
-    const glm::vec3 c =
-        std::abs(std::exp2(e) - 1.0f) <= kTexelTolerance ? glm::vec3(0.15f, 0.8f, 0.25f)
-        : e < 0.0f ? glm::mix(glm::vec3(1.0f, 0.85f, 0.8f), glm::vec3(0.85f, 0.05f, 0.05f), t)
-                   : glm::mix(glm::vec3(0.8f, 0.85f, 1.0f), glm::vec3(0.05f, 0.2f, 0.9f), t);
-    return ImGui::GetColorU32(ImVec4(c.r, c.g, c.b, 1.0f));
-  };
-  ImGui::TextWrapped("the aliasing view: texels per pixel, least axis (grey: not counted)");
-  const float width = ImGui::GetContentRegionAvail().x, height = ImGui::GetFontSize();
-  const ImVec2 at = ImGui::GetCursorScreenPos();
-  ImDrawList* draw = ImGui::GetWindowDrawList();
-  constexpr int kSteps = 60;
-  for (int i = 0; i < kSteps; ++i) {
-    const float e = -3.0f + 6.0f * (static_cast<float>(i) + 0.5f) / kSteps;
-    const float x0 = at.x + width * static_cast<float>(i) / kSteps;
-    draw->AddRectFilled(ImVec2(x0, at.y), ImVec2(x0 + width / kSteps + 1.0f, at.y + height),
-                        colour(e));
-  }
-  // One texel per pixel (green) is a hair's width on this scale: a tick marks it.
-  const float one = at.x + 0.5f * width;
-  draw->AddRectFilled(ImVec2(one - 1.5f, at.y - 2.0f), ImVec2(one + 1.5f, at.y + height + 2.0f),
-                      colour(0.0f));
-  ImGui::Dummy(ImVec2(width, height + 2.0f));
-  // The scale's ends and middle under the bar, then what the colours mean.
-  const float x0 = ImGui::GetCursorPosX();
-  ImGui::TextUnformatted("1/8");
-  ImGui::SameLine(x0 + 0.5f * width - 0.5f * ImGui::CalcTextSize("1").x);
-  ImGui::TextUnformatted("1");
-  ImGui::SameLine(x0 + width - ImGui::CalcTextSize("8").x);
-  ImGui::TextUnformatted("8");
-  ImGui::TextWrapped("red: under-sampled (blocky), green: one texel a pixel, blue: over");
 }
 
 void Runner::drawPanel(Frame& frame) {
@@ -302,15 +256,15 @@ void Runner::drawPanel(Frame& frame) {
                        static_cast<double>(kGrazingNdotL));
   }
   ImGui::PopStyleColor();
-  if (texels_.stats && texels_.stats->pixels == 0) {
+  if (const auto& texels = texels_.stats(); texels && texels->pixels == 0) {
     ImGui::TextWrapped("texels per pixel: none counted (no pixel seen lies in the map)");
-  } else if (texels_.stats) {
+  } else if (texels) {
     ImGui::TextWrapped("texels per pixel: median %.2f (least axis), %.1f%% under-sampled%s",
-                       texels_.stats->min_axis.median, texels_.stats->undersampled_pct,
-                       texels_.key == errorKey() ? "" : " (stale)");
+                       texels->min_axis.median, texels->undersampled_pct,
+                       texels_.current() ? "" : " (stale)");
   }
-  if (params_.at("view").choice() == "aliasing") drawTexelLegend();
-  if (const double overhead = shadowOverhead(); overhead > 0.0) {
+  if (params_.at("view").choice() == "aliasing") TexelPass::drawLegend();
+  if (const double overhead = baseline_.overhead(); overhead > 0.0) {
     ImGui::Text("cost: %.2fx the frame without shadow", overhead);
   }
   params_.drawWidgets([](const Param& p) { return p.name == "view" || p.name == "scene"; });

@@ -222,7 +222,7 @@ void Runner::releaseGl() {
   // runner's own, the context last (Gpu declares it first, so it is destroyed last).
   lesson_.reset();
   measure_.reset();
-  baseline_.measure.reset();
+  baseline_.release();
   gpu_.reset();
 }
 
@@ -230,7 +230,7 @@ void Runner::initGl() {
   GlErrorLog::install();
   GlErrorLog::reset();
   measure_ = std::make_unique<Measure>();
-  baseline_.measure = std::make_unique<Measure>();
+  baseline_.init();
   const auto dir = commonShaderDir();
   gpu_->gbuffer = Program(dir / "gbuffer.vert", dir / "gbuffer.frag");
   gpu_->image = Program(dir / "fullscreen.vert", dir / "image.frag");
@@ -263,42 +263,6 @@ void Runner::renderFrame(bool timed) {
   GlErrorLog::poll();
 }
 
-void Runner::renderBaselineFrame() {
-  Param* off = params_.find("shadow.off");
-  const std::string view = params_.at("view").choice();
-  if (off == nullptr || off->b() || view == "truth" || view == "error") return;
-  const int w = options_.width, h = options_.height;  // the picture's, as renderFrame's
-  gpu_->ensureTargets(w, h);
-  // What the lesson's frame told the runner, and what it has still to do (a dirty map must
-  // still be rendered by the next real frame), survive the baseline frame, exception or not.
-  // A scene reload it has done is not done again.
-  struct Restore {
-    Runner& r;
-    Param& off;
-    std::uint32_t dirty;
-    FrameOutputs told;
-    ~Restore() {
-      off.value[0] = 0.0;
-      std::swap(r.measure_, r.baseline_.measure);
-      r.baseline_.running = false;
-      r.params_.markDirty(dirty & ~kDirtyScene);
-      r.told_ = told;
-    }
-  } restore{*this, *off, params_.dirty(), told_};
-  std::swap(measure_, baseline_.measure);
-  baseline_.running = true;
-  off->value[0] = 1.0;  // not through Params::set: nothing is dirtied
-  // The first one compiles the unshadowed variants: not timed. The panel, if shown, is laid
-  // over it as over the lesson's frames (never drawn anew: it takes no input here).
-  const bool panel = gpu_->imgui && (window_.is_open ? !options_.hide_panel : options_.panel);
-  renderInto(gpu_->target->id(), w, h, view, /*timed=*/baseline_.frames++ > 0, panel);
-}
-
-double Runner::shadowOverhead() const {
-  const double base = baseline_.measure ? baseline_.measure->medianFrameMs() : 0.0;
-  return base > 0.0 ? measure_->medianFrameMs() / base : 0.0;
-}
-
 void Runner::renderInto(GLuint target, int width, int height, const std::string& mode, bool timed,
                         bool withPanel) {
   measure_->setEnabled(timed);
@@ -329,7 +293,7 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
                                     : glm::ivec2(width, height);
   const bool draw_panel =
       withPanel &&
-      (!window_.is_open || (!baseline_.running && window_.panelDue(panel_size.x, panel_size.y)));
+      (!window_.is_open || (!baseline_.running() && window_.panelDue(panel_size.x, panel_size.y)));
   if (draw_panel) {
     ImGuiIO& io = ImGui::GetIO();
     if (!window_.is_open) {
@@ -370,7 +334,7 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
     showImage(frame, shown);
   } else {
     // The texel views are the runner's, drawn over the lesson's shaded frame, whose map
-    // they measure: `aliasing` (offered by map lessons) and `texels` (measureTexels()).
+    // they measure: `aliasing` (offered by map lessons) and `texels` (texels_.measure()).
     const bool texels = frame.mode == "aliasing" || frame.mode == "texels";
     const std::string texel_mode = frame.mode;
     if (texels) frame.mode = "shaded";
@@ -381,7 +345,7 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
              frame.shadow_sampling};
     if (texels) {
       frame.mode = texel_mode;
-      drawTexels(frame, texel_mode == "aliasing");
+      texels_.draw(frame, texel_mode == "aliasing");
     }
   }
   if (withPanel && !window_.is_open) {

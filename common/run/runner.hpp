@@ -13,6 +13,7 @@
 #include "core/image.hpp"
 #include "lesson/lesson.hpp"
 #include "run/exercise_run.hpp"
+#include "run/side_passes.hpp"
 #include "run/truth_measure.hpp"
 #include "run/window.hpp"
 
@@ -62,22 +63,13 @@ class Runner final : public LessonHost {
   // Renders one frame into the runner's framebuffer (headless) or the window; untimed, it
   // leaves the timings and counters alone.
   void renderFrame(bool timed = true);
-  // The same frame with no shadow work (shadow.off), timed on its own and off-screen, so the
-  // report and the panel can say what the shadow costs over it, measured in the same run. The
-  // map and every dirty bit are left as they were. Nothing for lessons without shadow.off.
-  void renderBaselineFrame();
-  // Median frame over median baseline frame (0 before any baseline frame).
-  double shadowOverhead() const;
-  const Measure& baselineMeasure() const { return *baseline_.measure; }
+  // The frames without shadow the cost is measured against, and the texel-density pass.
+  BaselineFrames& baseline() { return baseline_; }
+  TexelPass& texels() { return texels_; }
   // The panel's frame line: the median the report gives ("measuring..." before any frame).
   std::string costSummary() const;
   // The last frame's work counters, one line: "name N, ..., name unavailable on gles30".
   std::string counterSummary() const;
-  // Why the truth and error views show no picture ("" when the build has the truth).
-  static std::string truthUnavailable();
-  // The picture an exercise is judged on, everywhere: --grade, a window or a page with an
-  // exercise chosen (fragment counts and texels per pixel depend on the picture's size).
-  static constexpr int kExerciseWidth = 640, kExerciseHeight = 480;
   // Feeds ImGui a mouse state for the next frame (headless tests drive the panel this way).
   void setMouse(glm::vec2 position, bool leftDown);
   // Whether input is moving (the window sets it each frame; tests may too): Frame::input_moving.
@@ -91,9 +83,6 @@ class Runner final : public LessonHost {
   bool pollErrorMeasure();
   // The running measure's progress in [0, 1], or -1 when not known (natively) or none runs.
   double errorMeasureProgress() const;
-  // Whether the truth and error views can show anything: the build has a tracer, and a page
-  // loaded its own (truthUnavailable() says why not).
-  static bool haveTruth();
   // The truth and its error as last measured: running(), measured() (how many so far: a page's
   // tests wait on it), failed() (a page's workers could not trace the current settings).
   const TruthMeasure& truth() const { return truth_; }
@@ -102,10 +91,6 @@ class Runner final : public LessonHost {
   std::vector<float> renderVisibility();
   // Renders `mode` into the float target and returns its red channel (visibility, air).
   std::vector<float> renderRed(const std::string& mode);
-  // Texels per pixel (texel_density.hpp) for the current parameters, read back from the
-  // runner's texel pass over the lesson's map; null when the last frame had no map.
-  // Cached until a parameter or the size changes.
-  const std::vector<TexelPixel>* measureTexels();
 
   Params& params() { return params_; }
   Measure& measure() { return *measure_; }
@@ -142,8 +127,6 @@ class Runner final : public LessonHost {
                  bool fullscreen) const override;
   void drawImageInset(const Frame& frame, const Texture& image, bool fullscreen) const override;
   void drawFullscreen(const Frame& frame, const Program& program, bool inset) const override;
-  // The aliasing view's colour bar, in the panel while that view shows (panel.cpp).
-  void drawTexelLegend() const;
 
   struct Gpu;
   void declareShared();
@@ -188,23 +171,10 @@ class Runner final : public LessonHost {
     std::optional<AirMedium> medium;
     std::optional<ShadowSampling> shadow_sampling;
   } told_;
-  // The frames with shadow.off (renderBaselineFrame), timed in their own Measure.
-  struct Baseline {
-    std::unique_ptr<Measure> measure;
-    long long frames = 0;
-    bool running = false;
-  } baseline_;
-  // measureTexels()'s pass, for `key`. Its frame draws into its own Measure, enabled: the
-  // lesson draws with the very variants a timed frame uses (05's counted kernel, not an
-  // uncounted twin), and the frame's counters stay out of the report's.
-  struct TexelCache {
-    std::vector<TexelPixel> pixels;
-    std::optional<TexelStats> stats;
-    std::string key;
-    std::unique_ptr<Measure> measure;
-  } texels_;
-  // The runner's texel pass over the frame the lesson just drew (`aliasing` view or raw).
-  void drawTexels(const Frame& frame, bool heatmap);
+  friend class BaselineFrames;
+  BaselineFrames baseline_{*this};
+  friend class TexelPass;
+  TexelPass texels_{*this};
   TruthMeasure truth_;
   int runHeadlessOrWindow();
   friend class ExerciseRun;

@@ -18,9 +18,6 @@ struct GLFWwindow;
 
 namespace shadows {
 
-// What the truth and error views say in a build without the truth (kHaveTruth).
-inline constexpr const char* kNoTruthNote = "truth not available in this build";
-
 struct Runner::Gpu {
   // First member, so it is destroyed last: every GL object below needs it to be deleted.
   std::unique_ptr<HeadlessContext> context;

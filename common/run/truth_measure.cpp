@@ -123,4 +123,17 @@ void TruthMeasure::fail(const std::string& key) {
   failed_ = true;
 }
 
+bool haveTruth() {
+  return kHaveTruth && truthTracerAvailable();
+}
+
+std::string truthUnavailable() {
+  if (!kHaveTruth) return std::string(kNoTruthNote) + ": the truth and error views are empty";
+  if (!truthTracerAvailable()) {
+    return "the page could not load its ray tracer (web/truth): the truth and error views are "
+           "empty";
+  }
+  return "";
+}
+
 }  // namespace shadows

@@ -25,6 +25,13 @@ namespace shadows {
 
 inline constexpr bool kHaveTruth = SHADOWS_HAVE_TRUTH != 0;
 
+// Whether the truth and error views can show anything: the build has a tracer, and a page
+// loaded its own; and why not when they cannot ("" when they can).
+bool haveTruth();
+std::string truthUnavailable();
+// What the truth and error views say in a build without the truth (kHaveTruth).
+inline constexpr const char* kNoTruthNote = "truth not available in this build";
+
 // What the truth needs from the GPU, read back on the render thread (a few ms), so that the
 // ray tracing can run anywhere.
 struct TruthInputs {

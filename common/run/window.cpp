@@ -58,7 +58,7 @@ bool RunnerWindow::begin() {
   }
 #endif
   if (r_.options_.exercise > 0 && !r_.options_.size_given)
-    width = Runner::kExerciseWidth, height = Runner::kExerciseHeight;
+    width = kExerciseWidth, height = kExerciseHeight;
   if (!r_.options_.hide_panel) width += static_cast<int>(kPanelColumn);
   GLFWwindow* window = glfwCreateWindow(
       width, height, (r_.name_ + ": " + r_.lesson_->title()).c_str(), nullptr, nullptr);
@@ -208,7 +208,7 @@ bool RunnerWindow::frame() {
       // After the frame, so the panel's numbers (drawn first thing in a frame) are the
       // lesson's, not the baseline's.
 #ifndef __EMSCRIPTEN__  // a page cannot time it (costSummary)
-      if (!r_.options_.hide_panel && frame_number++ % 32 == 0) r_.renderBaselineFrame();
+      if (!r_.options_.hide_panel && frame_number++ % 32 == 0) r_.baseline_.render();
 #endif
       GlErrorLog::poll();
       if (screenshot_requested) {
@@ -252,8 +252,8 @@ void RunnerWindow::fit(int width, int height) {
 }
 
 void RunnerWindow::fitExercise() {
-  fit(Runner::kExerciseWidth + (r_.options_.hide_panel ? 0 : static_cast<int>(kPanelColumn)),
-      Runner::kExerciseHeight);
+  fit(kExerciseWidth + (r_.options_.hide_panel ? 0 : static_cast<int>(kPanelColumn)),
+      kExerciseHeight);
 }
 
 int RunnerWindow::end() {

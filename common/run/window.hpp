@@ -32,7 +32,7 @@ class RunnerWindow {
   int end();
   // Resizes the window (a page's canvas, to fill the browser's window): picture and column.
   void fit(int width, int height);
-  // The window of an exercise: the grader's picture (Runner::kExerciseWidth x Height) and,
+  // The window of an exercise: the grader's picture (kExerciseWidth x Height) and,
   // while the panel shows, its column.
   void fitExercise();
   // The picture's part of a framebuffer this wide: all of it less the panel's column, where

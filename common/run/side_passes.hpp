@@ -1,0 +1,69 @@
+// Two passes the runner makes beside a lesson's frame, each an object of its own with the
+// runner's state it needs: the frame without shadow that the shadow's cost is measured against
+// (BaselineFrames, side_passes.cpp) and the texel-density pass that says how many map texels
+// fall on a pixel (TexelPass). Both draw into a Measure of their own, so the report's counters
+// stay the lesson's frame's.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gl/measure.hpp"
+#include "math/texel_density.hpp"
+
+namespace shadows {
+
+class Runner;
+struct Frame;
+
+class BaselineFrames {
+ public:
+  explicit BaselineFrames(Runner& runner) : r_(runner) {}
+  // The same frame with no shadow work (shadow.off), timed on its own and off-screen, so the
+  // report and the panel can say what the shadow costs over it, measured in the same run. The
+  // map and every dirty bit are left as they were. Nothing for lessons without shadow.off.
+  void render();
+  // Median frame over median baseline frame (0 before any baseline frame).
+  double overhead() const;
+  const Measure& measure() const { return *measure_; }
+  Measure& measure() { return *measure_; }
+  size_t timedFrames() const { return measure_ ? measure_->timedFrames() : 0; }
+  bool running() const { return running_; }  // the frame being drawn is a baseline one
+  void init() { measure_ = std::make_unique<Measure>(); }
+  void release() { measure_.reset(); }
+
+ private:
+  Runner& r_;
+  std::unique_ptr<Measure> measure_;
+  long long frames_ = 0;
+  bool running_ = false;
+};
+
+class TexelPass {
+ public:
+  explicit TexelPass(Runner& runner) : r_(runner) {}
+  // Texels per pixel (texel_density.hpp) for the current parameters, read back from the pass
+  // over the lesson's map; null when the last frame had no map. Cached until a parameter or
+  // the size changes. Its frame draws into its own Measure, enabled: the lesson draws with the
+  // very variants a timed frame uses (05's counted kernel, not an uncounted twin).
+  const std::vector<TexelPixel>* measure();
+  // The last measure's figures (none before one, or without a map), and whether they are for
+  // the current parameters.
+  const std::optional<TexelStats>& stats() const { return stats_; }
+  bool current() const;
+  // The pass over the frame the lesson just drew (the `aliasing` view, or raw for measure()).
+  void draw(const Frame& frame, bool heatmap) const;
+  // The aliasing view's colour bar, in the panel while that view shows.
+  static void drawLegend();
+
+ private:
+  Runner& r_;
+  std::vector<TexelPixel> pixels_;
+  std::optional<TexelStats> stats_;
+  std::string key_;
+  std::unique_ptr<Measure> measure_;
+};
+
+}  // namespace shadows
