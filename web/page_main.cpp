@@ -34,7 +34,7 @@ void failed(const std::string& line) {
 
 // The error line under the canvas: the last truth's numbers, or the worker's progress.
 std::string errorSummary() {
-  if (!haveTruth()) return truthUnavailable();
+  if (!shadows::haveTruth()) return shadows::truthUnavailable();
   char line[160];
   if (g_runner->truth().running()) {
     std::snprintf(line, sizeof line, "tracing the truth (three-mesh-bvh, in Web Workers): %.0f %%",
