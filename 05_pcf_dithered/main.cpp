@@ -48,6 +48,9 @@ class PcfDithered final : public Lesson {
                          "kernel half-width in texels (001's swidth x 2)");
     taps_ = p.addInt("pcf.taps", 16, 1, 64, "grid: up to N x N of this; poisson: this many");
     early_out_ = p.addBool("pcf.early_out", true, "stop after 4 probe taps that agree");
+    lookup_ = p.addChoice("pcf.lookup", pcf::kLookupNames, "compare",
+                          "how a tap reads the map: the texture unit's compare, a fetch and a "
+                          "compare in the shader (LearnOpenGL), or 4 compares a call (gather)");
     count_ = p.addBool("pcf.count", true,
                        "count taps per fragment (its atomics cost the eye pass ~10%)");
     // Lesson 04's default bias: back faces into the map, plus glPolygonOffset(factor, units).
@@ -64,6 +67,7 @@ class PcfDithered final : public Lesson {
     // Two compare samplers for the same map: nearest (one texel per tap), linear (hw2x2).
     nearest_ = Sampler::depth(/*compare=*/true, GL_NEAREST);
     linear_ = Sampler::depth(/*compare=*/true, GL_LINEAR);
+    fetch_ = Sampler::depth(/*compare=*/false, GL_NEAREST);  // pcf.lookup=fetch: depths
     counters_ = CounterBuffer(4);  // taps, filtered, stopped early, facing away
   }
   void render(Frame& f) override {
@@ -89,10 +93,12 @@ class PcfDithered final : public Lesson {
       f.clearTarget();
       map_.texture().bind(0);
       const bool linear = mode == pcf::Mode::Hw2x2 || linear_filter_.name() == "linear";
-      (linear ? linear_ : nearest_).bind(0);
-      const Program& e = eye_programs_.get({mode_.defines(), early_out_.defines(),
-                                            kernelDefines(mode), define("PCF_COUNT", counting),
-                                            f.viewDefines(), define("SHADOW_OFF", map_.off())});
+      lookup_used_ = lookupUsed(mode, grid, radius);
+      const bool fetch = lookup_used_.lookup == pcf::Lookup::Fetch;
+      (fetch ? fetch_ : linear ? linear_ : nearest_).bind(0);
+      const Program& e = eye_programs_.get(
+          {mode_.defines(), early_out_.defines(), kernelDefines(mode), lookupDefines(grid),
+           define("PCF_COUNT", counting), f.viewDefines(), define("SHADOW_OFF", map_.off())});
       e.set("uViewProjection", f.projection * f.view);
       e.set("uShadowMatrix", map_.textureMatrix());  // B * P_light * V_light
       e.set("uShadowMap", 0);
@@ -152,6 +158,10 @@ class PcfDithered final : public Lesson {
       ImGui::Text("       skipped: %lld facing away, %lld after 4 probes",
                   count("pcf_skipped_facing_away"), count("pcf_stopped_early"));
     }
+    const auto used = static_cast<size_t>(lookup_used_.lookup);
+    ImGui::Text("lookup: %s", pcf::kLookupNames[used].c_str());
+    if (!lookup_used_.why.empty())
+      ImGui::TextWrapped("  (not %s: %s)", lookup_.name().c_str(), lookup_used_.why.c_str());
     const ErrorState& error = f.runner.lastError();
     if (error.valid) {
       ImGui::Text("error: vis_mae %.4f vs an area light r=%.3f", error.metrics.vis_mae,
@@ -191,6 +201,8 @@ class PcfDithered final : public Lesson {
 
   void report(JsonWriter& json) const override {
     json.value("kernel_half_width_texels", kernel_texels_);
+    json.value("pcf_lookup_used", pcf::kLookupNames[static_cast<size_t>(lookup_used_.lookup)]);
+    json.value("pcf_lookup_fallback", lookup_used_.why);
     json.value("truth_area_radius", match_.radius);
     json.value("match_occluder_distance", match_.occluder_distance);
     json.value("match_receiver_distance", match_.receiver_distance);
@@ -206,6 +218,38 @@ class PcfDithered final : public Lesson {
   }
 
  private:
+  // The lookup that runs (pcf.lookup where it can), and why not the one asked for ("").
+  struct LookupUsed {
+    pcf::Lookup lookup = pcf::Lookup::Compare;
+    std::string why;
+  };
+  LookupUsed lookupUsed(pcf::Mode mode, int grid, float radius) const {
+    const pcf::Lookup asked = lookup_();
+    if (asked == pcf::Lookup::Compare) return {};
+    if (mode == pcf::Mode::Hw2x2 || linear_filter_.name() == "linear") {
+      return {pcf::Lookup::Compare,
+              "a GL_LINEAR compare is the texture unit's own filter (hw2x2, shadow.filter=linear)"};
+    }
+    if (asked == pcf::Lookup::Fetch) return {pcf::Lookup::Fetch, ""};
+    if (!caps().texture_gather) {
+      return {pcf::Lookup::Compare,
+              "textureGather with a reference needs GL 4.0 or ES 3.1: " + caps().unavailable()};
+    }
+    if (pcf::gatherGridSide(mode, grid, radius) == 0) {
+      return {pcf::Lookup::Compare,
+              "gather takes a grid of adjacent texels: pcf.mode=grid, pcf.radius = side / 2"};
+    }
+    return {pcf::Lookup::Gather, ""};
+  }
+  // pcf.lookup's #defines for the lookup that runs (PCF_LOOKUP_..., pcf.glsl), and the
+  // gathered grid's side.
+  std::vector<std::string> lookupDefines(int grid) const {
+    const auto used = static_cast<size_t>(lookup_used_.lookup);
+    std::vector<std::string> d =
+        choiceDefines("pcf.lookup", pcf::kLookupNames, pcf::kLookupNames[used]);
+    if (lookup_used_.lookup == pcf::Lookup::Gather) d.push_back(define("PCF_GATHER_SIDE", grid)[0]);
+    return d;
+  }
   // The kernel compiled into the variant: its offsets for a radius of one texel, from
   // pcf_math.hpp (what the unit tests check), as a constant array; pcf.glsl scales them by
   // the radius, the one kernel setting left a uniform. A new variant per grid side (8) or
@@ -223,7 +267,9 @@ class PcfDithered final : public Lesson {
   // scene.frag + pcf.glsl compiled for one filter, view, early out, counting and shadow.off,
   // when a setting first asks for it: a frame runs only its own kernel.
   ProgramVariants eye_programs_;
-  Sampler nearest_, linear_;
+  Sampler nearest_, linear_, fetch_;
+  ChoiceParam<pcf::Lookup> lookup_;
+  LookupUsed lookup_used_;
   CounterBuffer counters_;
   FloatParam dimming_, radius_, factor_, units_;
   ChoiceParam<pcf::Mode> mode_;

@@ -136,6 +136,15 @@ inline double reportNumber(Runner& runner, const std::string& key) {
   return v.is_number() ? v.get<double>() : 0.0;
 }
 
+// A driver without a feature, as a laptop's may be: SHADOWS_TEST_CAPS_OFF switches it off in the
+// GL context's caps for the runners started while it lives (common/gl/caps.cpp).
+struct CapsOff {
+  explicit CapsOff(const char* names) { setenv("SHADOWS_TEST_CAPS_OFF", names, 1); }
+  ~CapsOff() { unsetenv("SHADOWS_TEST_CAPS_OFF"); }
+  CapsOff(const CapsOff&) = delete;
+  CapsOff& operator=(const CapsOff&) = delete;
+};
+
 // A string from the lesson's --report ("" when the key is missing).
 inline std::string reportString(Runner& runner, const std::string& key) {
   const nlohmann::ordered_json v = reportValue(runner, key);

@@ -199,6 +199,84 @@ TEST(Lesson05, CompiledKernelsDrawTheUniformArrayKernelsPicturesByteForByte) {
   EXPECT_EQ(runner->glErrors(), 0);
 }
 
+// pcf.lookup (issue 40): the same kernel read three ways draws the same shadow term, byte for
+// byte, and the report says which lookup ran and why another did not.
+TEST(Lesson05, EveryLookupDrawsTheComparesShadowByteForByte) {
+  struct Case {
+    std::vector<std::string> sets;
+    const char* gather_runs;  // what pcf.lookup=gather runs for this kernel
+  };
+  const Case cases[] = {
+      {{"pcf.mode=grid", "pcf.taps=9", "pcf.radius=1.5", "pcf.early_out=false"}, "gather"},
+      {{"pcf.mode=grid", "pcf.taps=9", "pcf.radius=1.5"}, "gather"},
+      {{"pcf.mode=grid", "pcf.taps=25", "pcf.radius=2.5"}, "gather"},  // odd: half blocks
+      {{"pcf.mode=grid", "pcf.taps=16", "pcf.radius=2", "pcf.early_out=false"}, "gather"},
+      {{"pcf.mode=grid", "pcf.taps=16", "pcf.radius=2.3"}, "compare"},  // not adjacent texels
+      {{"pcf.mode=dithered"}, "compare"},
+      {{"pcf.mode=poisson", "pcf.taps=16"}, "compare"},
+      {{"pcf.mode=none"}, "compare"},
+  };
+  for (const char* scene : {"cubes", "dueling", "torus_pyramid"}) {
+    for (const Case& c : cases) {
+      std::vector<std::string> sets = c.sets;
+      sets.push_back(std::string("scene=") + scene);
+      sets.push_back("view=visibility");
+      const auto render = [&](const std::string& lookup) {
+        std::vector<std::string> all = sets;
+        all.push_back("pcf.lookup=" + lookup);
+        auto runner = startLesson(kLesson, all);
+        runner->renderFrame();
+        EXPECT_EQ(runner->glErrors(), 0) << label(sets) << " " << lookup;
+        struct Result {
+          std::vector<std::uint8_t> rgba;
+          std::string used;
+          long long lookups;
+        } r{runner->readImage().rgba, testing::reportString(*runner, "/pcf_lookup_used"),
+            counter(*runner, "pcf_taps")};
+        return r;
+      };
+      const auto compare = render("compare"), fetch = render("fetch"), gather = render("gather");
+      EXPECT_EQ(compare.used, "compare");
+      EXPECT_EQ(fetch.used, "fetch") << label(sets);
+      EXPECT_EQ(gather.used, c.gather_runs) << label(sets);
+      EXPECT_TRUE(fetch.rgba == compare.rgba) << label(sets) << ": fetch";
+      EXPECT_TRUE(gather.rgba == compare.rgba) << label(sets) << ": gather";
+      EXPECT_EQ(fetch.lookups, compare.lookups) << label(sets);  // one texel a lookup
+      // Four compares a lookup: a 3 x 3 grid every tap is 4 lookups, not 9.
+      if (std::string(c.gather_runs) == "gather" && c.sets[1] == "pcf.taps=9" &&
+          c.sets.size() == 4) {
+        EXPECT_EQ(gather.lookups * 9, compare.lookups * 4) << label(sets);
+      }
+    }
+  }
+}
+
+TEST(Lesson05, ALookupThatCannotRunSaysWhyAndTheCompareRuns) {
+  const auto run = [](const std::vector<std::string>& sets) {
+    auto runner = startLesson(kLesson, sets);
+    runner->renderFrame();
+    EXPECT_EQ(runner->glErrors(), 0);
+    return std::pair{testing::reportString(*runner, "/pcf_lookup_used"),
+                     testing::reportString(*runner, "/pcf_lookup_fallback")};
+  };
+  EXPECT_EQ(run({"pcf.mode=grid", "pcf.taps=9", "pcf.radius=1.5", "pcf.lookup=gather"}),
+            std::pair(std::string("gather"), std::string()));
+  const auto hw = run({"pcf.mode=hw2x2", "pcf.lookup=fetch"});
+  EXPECT_EQ(hw.first, "compare");
+  EXPECT_NE(hw.second.find("GL_LINEAR"), std::string::npos) << hw.second;
+  const auto apart = run({"pcf.mode=grid", "pcf.radius=3", "pcf.lookup=gather"});
+  EXPECT_EQ(apart.first, "compare");
+  EXPECT_NE(apart.second.find("adjacent texels"), std::string::npos) << apart.second;
+  // Where the context has no textureGather (gles30, WebGL 2; here switched off).
+  std::pair<std::string, std::string> none;
+  {
+    const testing::CapsOff off("texture_gather");
+    none = run({"pcf.mode=grid", "pcf.taps=9", "pcf.radius=1.5", "pcf.lookup=gather"});
+  }
+  EXPECT_EQ(none.first, "compare");
+  EXPECT_NE(none.second.find("GL 4.0 or ES 3.1"), std::string::npos) << none.second;
+}
+
 TEST(Lesson05, EarlyOutSkipsMostTapsAndBarelyChangesTheShadow) {
   // 64 taps: where the 4 corner probes agree (fully lit or fully shadowed), the other 60 are
   // skipped. Only something smaller than the kernel hiding between the corners could differ.

@@ -118,12 +118,7 @@ TEST(Lesson13, MipmappedMomentsAreReadTrilinearAndNoWorse) {
   EXPECT_NE(mipmapped["error"]["vis_mae"], plain["error"]["vis_mae"]);
 }
 
-// A driver without a feature, as a laptop's may be: SHADOWS_TEST_CAPS_OFF switches it off in the
-// GL context's caps for one runner (common/gl/caps.cpp).
-struct CapsOff {
-  explicit CapsOff(const char* names) { setenv("SHADOWS_TEST_CAPS_OFF", names, 1); }
-  ~CapsOff() { unsetenv("SHADOWS_TEST_CAPS_OFF"); }
-};
+using testing::CapsOff;
 
 TEST(Lesson13, WithoutFloatFilteringTheMomentsAre16BitsAndSaySo) {
   nlohmann::ordered_json report;

@@ -186,6 +186,25 @@ TEST(PcfMath, GridSideIsTheLargestSquareInTheTapBudget) {
   EXPECT_EQ(gridSide(0), 1);
 }
 
+TEST(PcfMath, GatherTakesAGridWhoseTapsAreAdjacentTexels) {
+  // Midpoints 2 r / N apart: one texel when r = N / 2, the grid's offsets then whole or half
+  // texels one apart (tapOffsets), so 2 x 2 blocks hold them.
+  EXPECT_EQ(gatherGridSide(Mode::Grid, 3, 1.5f), 3);
+  EXPECT_EQ(gatherGridSide(Mode::Grid, 8, 4.0f), 8);
+  const auto offsets = tapOffsets(Mode::Grid, 9, 1.5f);
+  // -1, 0, 1: adjacent texels, up to the rounding of (2/3) * 1.5 in floats (a tap within 1e-7
+  // texel of a texel's edge may pick its neighbour where the gathered block does not).
+  for (const glm::vec2& o : offsets) {
+    EXPECT_NEAR(o.x, std::round(o.x), 1e-6);
+    EXPECT_NEAR(o.y, std::round(o.y), 1e-6);
+  }
+  EXPECT_EQ(gatherGridSide(Mode::Grid, 3, 1.0f), 0);  // 2/3 texel apart
+  EXPECT_EQ(gatherGridSide(Mode::Grid, 3, 3.0f), 0);  // 2 texels apart: one tap a block
+  EXPECT_EQ(gatherGridSide(Mode::Grid, 1, 0.5f), 0);  // one tap
+  EXPECT_EQ(gatherGridSide(Mode::Poisson, 4, 2.0f), 0);
+  EXPECT_EQ(gatherGridSide(Mode::Dithered, 4, 2.0f), 0);
+}
+
 TEST(PcfMath, AreaLightRadiusMatchesThePenumbraWidth) {
   // Occluder edge at 6, receiver at 8 from the light, texel 0.01 wide at the receiver, kernel
   // half-width 2 texels: the kernel blurs +-0.02. A disk of radius a gives a penumbra of

@@ -94,6 +94,7 @@ bool loadGl(GLADloadfunc load) {
   c.samples_passed = c.texture_1d = c.border_clamp = c.clip_distance = true;
   c.depth_readback = c.float_color_targets = c.texture_swizzle = true;
   c.depth_clamp = GLAD_GL_VERSION_3_2 != 0;
+  c.texture_gather = GLAD_GL_VERSION_4_0 != 0;
   c.pipeline_statistics = GLAD_GL_ARB_pipeline_statistics_query != 0;
   c.debug_output = GLAD_GL_KHR_debug != 0;
 #if SHADOWS_GL_VERSION >= 430
@@ -113,6 +114,7 @@ bool loadGl(GLADloadfunc load) {
     };
     if (named("float_linear")) c.float_linear = false;
     if (named("anisotropy")) c.max_anisotropy = 1.0f;
+    if (named("texture_gather")) c.texture_gather = false;
   }
   g_caps = c;
   return true;

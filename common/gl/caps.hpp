@@ -31,6 +31,7 @@ struct Caps {
   bool texture_swizzle = false;       // GL_TEXTURE_SWIZZLE_* (GL 3.3, ES 3.0; not WebGL 2):
                                       // else the image shader swizzles what it shows
   bool float_linear = false;          // 32-bit float textures filter LINEAR (ES: an extension)
+  bool texture_gather = false;        // textureGather with a depth reference: GL 4.0, ES 3.1
   float max_anisotropy = 1.0f;        // anisotropic filtering (GL 4.6, EXT/ARB extensions):
                                       // 1 = none, lookups are trilinear at best
 

@@ -93,6 +93,21 @@ inline const std::array<glm::vec2, 64>& poissonDisk() {
 enum class Mode { None, Hw2x2, Grid, Dithered, Poisson };
 inline const std::vector<std::string> kModeNames = {"none", "hw2x2", "grid", "dithered", "poisson"};
 
+// pcf.lookup's choices (lesson 05): how a tap reads the map. compare: a sampler2DShadow, the
+// texture unit compares; fetch: texelFetch of the nearest texel and a compare in the shader
+// (LearnOpenGL's way); gather: textureGather with a reference, the four compares of a 2 x 2
+// block in one call (GL 4.0, ES 3.1).
+enum class Lookup { Compare, Fetch, Gather };
+inline const std::vector<std::string> kLookupNames = {"compare", "fetch", "gather"};
+
+// The side N of a grid whose taps fall on N x N adjacent texels, so that 2 x 2 gathers can take
+// them (ceil(N/2)^2 calls instead of N^2 taps), or 0. Adjacent means one texel apart: the grid's
+// midpoints 2 radius / N apart, radius = N / 2 exactly (3 x 3 at radius 1.5, LearnOpenGL's).
+inline int gatherGridSide(Mode mode, int side, float radius) {
+  if (mode != Mode::Grid || side < 2) return 0;
+  return 2.0f * radius == static_cast<float>(side) ? side : 0;
+}
+
 // The side N of the grid for a tap budget: the largest N x N that fits, 1 to 8 (64 taps).
 inline int gridSide(int taps) {
   int n = 1;

@@ -3,7 +3,21 @@
 // The tap offsets are not computed here: pcf_math.hpp (unitTapOffsets) computes them on the
 // CPU and main.cpp compiles them in, so the unit tests check the very offsets the shader uses.
 #include "border.glsl"
+// PCF_LOOKUP (lesson 05's pcf.lookup, pcf_math.hpp Lookup; without it, compare): how a tap
+// reads the map. COMPARE: the texture unit compares (GL_COMPARE_REF_TO_TEXTURE); FETCH: the
+// nearest texel's depth and a compare here, through a sampler without compare (main.cpp);
+// GATHER: the grid's adjacent taps four at a time (pcfGatherGrid).
+#ifndef PCF_LOOKUP
+#define PCF_LOOKUP_COMPARE 0
+#define PCF_LOOKUP_FETCH 1
+#define PCF_LOOKUP_GATHER 2
+#define PCF_LOOKUP PCF_LOOKUP_COMPARE
+#endif
+#if PCF_LOOKUP == PCF_LOOKUP_FETCH
+uniform sampler2D uShadowMap;
+#else
 uniform sampler2DShadow uShadowMap;
+#endif
 // Compiled per setting (main.cpp): PCF_MODE is pcf.mode (PCF_MODE_NONE .. PCF_MODE_POISSON);
 // PCF_EARLY_OUT 1: stop after 4 probe taps that agree. The kernel is compiled in too, so its
 // loops run to constants over constant offsets and unroll (a loop to a uniform count over a
@@ -32,8 +46,65 @@ float tap(vec3 c, vec2 offsetTexels) {
   gTaps++;
   vec2 uv = c.xy + offsetTexels * uTexel;
   if (outsideTexture(uv, vec2(textureSize(uShadowMap, 0)))) return 1.0;  // the border: lit
+#if PCF_LOOKUP == PCF_LOOKUP_FETCH
+  // The depth of the texel a NEAREST lookup takes (the border's 1 outside), compared here as
+  // GL_LEQUAL does. A plain texture(), as LearnOpenGL reads it: texelFetch cost llvmpipe more.
+  return c.z <= texture(uShadowMap, uv).r ? 1.0 : 0.0;
+#else
   return texture(uShadowMap, vec3(uv, c.z));
+#endif
 }
+
+#if PCF_LOOKUP == PCF_LOOKUP_GATHER
+// textureGather with a reference: the compares of the 2 x 2 texels from `first` (texel
+// coordinates), as (first + (0,1), + (1,1), + (1,0), + (0,0)). One lookup.
+vec4 gatherBlock(vec2 first, float z) {
+  gTaps++;
+  return textureGather(uShadowMap, (first + 1.0) * uTexel, z);
+}
+
+// The compare of texel (i, j), each 0 or 1, of a gathered block.
+float blockTexel(vec4 g, int i, int j) {
+  return j == 0 ? (i == 0 ? g.w : g.z) : (i == 0 ? g.x : g.y);
+}
+
+// The taps of block (bx, by) inside the n x n grid: an odd side's last blocks are half in.
+float blockSum(vec4 g, int bx, int by, int n) {
+  bool x1 = 2 * bx + 1 < n, y1 = 2 * by + 1 < n;
+  return g.w + (x1 ? g.z : 0.0) + (y1 ? g.x : 0.0) + (x1 && y1 ? g.y : 0.0);
+}
+
+// The grid of PCF_GATHER_SIDE^2 taps on adjacent texels (pcf_math.hpp gatherGridSide), block by
+// block: ceil(N/2)^2 lookups for N^2 taps. Its first texel is the first tap's, found as tap()
+// finds it; the others follow one texel apart. The corner blocks come first: the early out
+// decides on the same four corner taps as pcfKernel, so the picture is the compare path's.
+float pcfGatherGrid(vec3 c, float radius) {
+  const int n = PCF_GATHER_SIDE, m = (n + 1) / 2, last = m - 1;
+  const int far = 1 - n % 2;  // the far corner's place in the last block
+  PRECISE vec2 offsetTexels = kUnitTaps[0] * radius;  // the (-, -) corner
+  vec2 first = floor((c.xy + offsetTexels * uTexel) * vec2(textureSize(uShadowMap, 0)));
+  vec4 c00 = gatherBlock(first, c.z);
+  if (m == 1) return (c00.x + c00.y + c00.z + c00.w) * 0.25;  // 2 x 2: one lookup
+  vec4 c10 = gatherBlock(first + vec2(float(2 * last), 0.0), c.z);
+  vec4 c01 = gatherBlock(first + vec2(0.0, float(2 * last)), c.z);
+  vec4 c11 = gatherBlock(first + vec2(float(2 * last)), c.z);
+#if PCF_EARLY_OUT == 1
+  float corners = c00.w + blockTexel(c10, far, 0) + blockTexel(c01, 0, far) +
+                  blockTexel(c11, far, far);
+  gStopped = corners == 0.0 || corners == 4.0;
+  if (gStopped) return corners * 0.25;
+#endif
+  float sum = blockSum(c00, 0, 0, n) + blockSum(c10, last, 0, n) + blockSum(c01, 0, last, n) +
+              blockSum(c11, last, last, n);
+  for (int by = 0; by < m; ++by) {
+    for (int bx = 0; bx < m; ++bx) {
+      if ((bx == 0 || bx == last) && (by == 0 || by == last)) continue;  // a corner block
+      sum += blockSum(gatherBlock(first + 2.0 * vec2(float(bx), float(by)), c.z), bx, by, n);
+    }
+  }
+  return sum / float(n * n);
+}
+#endif
 
 #ifdef PCF_TAP_COUNT
 // A tap of the compiled kernel: a unit offset scaled by the radius (the kernel's half-width in
@@ -95,7 +166,9 @@ float pcfDithered(vec3 c, float radius) {
 
 // c: (s, t, r) after the divide by q; radius: the kernel's half-width in texels.
 float percentageCloser(vec3 c, float radius) {
-#if PCF_MODE == PCF_MODE_GRID || PCF_MODE == PCF_MODE_POISSON
+#if PCF_LOOKUP == PCF_LOOKUP_GATHER
+  return pcfGatherGrid(c, radius);
+#elif PCF_MODE == PCF_MODE_GRID || PCF_MODE == PCF_MODE_POISSON
   return pcfKernel(c, radius);
 #elif PCF_MODE == PCF_MODE_DITHERED
   return pcfDithered(c, radius);
