@@ -88,20 +88,39 @@ float pcfGatherGrid(vec3 c, float radius) {
   vec4 c10 = gatherBlock(first + vec2(float(2 * last), 0.0), c.z);
   vec4 c01 = gatherBlock(first + vec2(0.0, float(2 * last)), c.z);
   vec4 c11 = gatherBlock(first + vec2(float(2 * last)), c.z);
+  float sum = blockSum(c00, 0, 0, n) + blockSum(c10, last, 0, n) + blockSum(c01, 0, last, n) +
+              blockSum(c11, last, last, n);
 #if PCF_EARLY_OUT == 1
   float corners = c00.w + blockTexel(c10, far, 0) + blockTexel(c01, 0, far) +
                   blockTexel(c11, far, far);
   gStopped = corners == 0.0 || corners == 4.0;
-  if (gStopped) return corners * 0.25;
 #endif
-  float sum = blockSum(c00, 0, 0, n) + blockSum(c10, last, 0, n) + blockSum(c01, 0, last, n) +
-              blockSum(c11, last, last, n);
+#if PCF_EARLY_OUT == 1
+  if (m > 2) {
+    // The blocks between the corners, in a loop llvmpipe leaves once no pixel of its vector is
+    // still in it (pcfKernel's early out); its start is one the compiler cannot know (always
+    // 0), so that it stays a loop: unrolled, every pixel would run every turn.
+    // Block k: the first and last rows' middle blocks, then the rows between, whole.
+    const int edge = m - 2;
+    int k = sum > float(n * n) ? 1 : 0;
+    while (k < m * m - 4 && !gStopped) {
+      int j = k - 2 * edge;
+      int bx = k < 2 * edge ? 1 + k % edge : j % m;
+      int by = k < edge ? 0 : k < 2 * edge ? last : 1 + j / m;
+      sum += blockSum(gatherBlock(first + 2.0 * vec2(float(bx), float(by)), c.z), bx, by, n);
+      ++k;
+    }
+  }
+  if (gStopped) return corners * 0.25;
+#else
+  // Every block: unrolled, cheaper than the loop (64 taps: 68 against 85 M instructions).
   for (int by = 0; by < m; ++by) {
     for (int bx = 0; bx < m; ++bx) {
       if ((bx == 0 || bx == last) && (by == 0 || by == last)) continue;  // a corner block
       sum += blockSum(gatherBlock(first + 2.0 * vec2(float(bx), float(by)), c.z), bx, by, n);
     }
   }
+#endif
   return sum / float(n * n);
 }
 #endif
