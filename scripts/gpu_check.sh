@@ -283,6 +283,10 @@ target_row() {  # target_row TEXT LIMIT GPU_RATIO LLVMPIPE_RATIO
       "$(pcf_ratio "$gpu_pcf" grid3x3 $scene)" "$(pcf_ratio "$cpu_pcf" grid3x3 $scene)"
     target_row "05 3×3 grid, early out, $scene: eye pass / unshadowed" 1.25 \
       "$(pcf_ratio "$gpu_pcf" grid3x3_early_out $scene)" "$(pcf_ratio "$cpu_pcf" grid3x3_early_out $scene)"
+    for lookup in fetch gather; do  # issue 40: the same grid read another way (llvmpipe: README)
+      target_row "05 3×3 grid, every tap, pcf.lookup=$lookup, $scene: eye pass / unshadowed" 1.6 \
+        "$(pcf_ratio "$gpu_pcf" grid3x3_$lookup $scene)" "$(pcf_ratio "$cpu_pcf" grid3x3_$lookup $scene)"
+    done
     target_row "05 one tap (none), $scene: eye pass / unshadowed" 1.15 \
       "$(pcf_ratio "$gpu_pcf" none $scene)" "$(pcf_ratio "$cpu_pcf" none $scene)"
   done
