@@ -83,6 +83,7 @@ class PcfDithered final : public Lesson {
                                                             : radius;
     match_ = matchAreaLight(f, map_, kernel_texels_);
     f.truth_area_radius = match_.radius;
+    lookup_used_ = lookupUsed(mode, grid, radius);  // the report's, in every view
     if (map_.drawDepthView(f)) return;
 
     // Counting needs a storage buffer (GL 4.3): elsewhere the counts are unavailable.
@@ -93,7 +94,6 @@ class PcfDithered final : public Lesson {
       f.clearTarget();
       map_.texture().bind(0);
       const bool linear = mode == pcf::Mode::Hw2x2 || linear_filter_.name() == "linear";
-      lookup_used_ = lookupUsed(mode, grid, radius);
       const bool fetch = lookup_used_.lookup == pcf::Lookup::Fetch;
       (fetch ? fetch_ : linear ? linear_ : nearest_).bind(0);
       const Program& e = eye_programs_.get(

@@ -20,9 +20,12 @@ while [[ $# -gt 0 ]]; do
     --frames) frames=$2; shift 2 ;;
     --rounds) rounds=$2; shift 2 ;;
     -h|--help) sed -n 2,14p "${BASH_SOURCE[0]}"; exit 0 ;;
+    -*) echo "learnopengl_side_by_side: unknown option $1 (--frames N, --rounds R)" >&2; exit 2 ;;
     *) logl=$1; shift ;;
   esac
 done
+[[ $frames =~ ^[0-9]+$ && $frames -ge 4 ]] || { echo "learnopengl_side_by_side: --frames must be 4 or more" >&2; exit 2; }
+[[ $rounds =~ ^[0-9]+$ && $rounds -ge 1 ]] || { echo "learnopengl_side_by_side: --rounds must be 1 or more" >&2; exit 2; }
 if [[ -z $logl ]]; then
   cat <<'EOF'
 learnopengl_side_by_side: no LearnOpenGL checkout given, nothing measured.
@@ -32,6 +35,9 @@ learnopengl_side_by_side: no LearnOpenGL checkout given, nothing measured.
 EOF
   exit 0
 fi
+[[ -d $logl ]] || { echo "learnopengl_side_by_side: $logl is not a folder" >&2; exit 2; }
+logl=$(cd "$logl" && pwd)  # its programs run from their chapter's folder
+[[ $logl != *[\"\\]* ]] || { echo "learnopengl_side_by_side: a path with quotes or backslashes" >&2; exit 2; }
 chapter=$logl/src/5.advanced_lighting/3.1.3.shadow_mapping
 [[ -f $chapter/shadow_mapping.cpp ]] || { echo "learnopengl_side_by_side: $chapter/shadow_mapping.cpp not found" >&2; exit 2; }
 lesson=$repo/build/05_pcf_dithered
@@ -67,6 +73,9 @@ g++ -O2 -std=c++17 -I"$work" -I"$logl/includes" "$work/main.cpp" "$logl/src/glad
   "$logl/src/stb_image.cpp" -lglfw -ldl -lpthread -o "$work/logl" 2>"$work/build.log" ||
   { cat "$work/build.log" >&2; exit 1; }
 export LIBGL_ALWAYS_SOFTWARE=1 GALLIUM_DRIVER=llvmpipe
+# The median of sorted numbers, one a line: the middle one, or the mean of the middle two (as
+# the lessons' frame_ms is).
+median() { awk '{a[NR] = $1} END { if (NR % 2) print a[(NR + 1) / 2]; else print (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
 logl_run() { (cd "$chapter" && xvfb-run -a -s "-screen 0 1024x768x24" "$@"); }
 
 # Instructions: a dump before each glfwSwapBuffers holds a frame's work (the swap itself is a
@@ -111,7 +120,7 @@ done
 ratios=()
 for ((r = 0; r < rounds; ++r)); do
   logl_ms=$(logl_run "$work/logl" 2>&1 >/dev/null | awk '/harness frame_ms/ {print $3}' |
-            tail -n +3 | sort -n | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}')
+            tail -n +3 | sort -n | median)
   "$lesson" --headless --no-truth --frames "$frames" "${config[@]}" --set pcf.early_out=false \
     --set shadow.cache=false --out /dev/null --report "$work/r.json" >/dev/null
   our_ms=$(python3 -c "import json; print(json.load(open('$work/r.json'))['frame_ms'])")
@@ -119,4 +128,4 @@ for ((r = 0; r < rounds; ++r)); do
   printf 'round %d: LearnOpenGL %.2f ms, 05 (compare, every tap) %.2f ms\n' $((r + 1)) "$logl_ms" "$our_ms"
 done
 printf 'timed: 05 / LearnOpenGL, median of %d rounds: %.2fx\n' "$rounds" \
-  "$(printf '%s\n' "${ratios[@]}" | sort -n | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}')"
+  "$(printf '%s\n' "${ratios[@]}" | sort -n | median)"

@@ -211,6 +211,8 @@ TEST(Lesson05, EveryLookupDrawsTheComparesShadowByteForByte) {
       {{"pcf.mode=grid", "pcf.taps=9", "pcf.radius=1.5"}, "gather"},
       {{"pcf.mode=grid", "pcf.taps=25", "pcf.radius=2.5"}, "gather"},  // odd: half blocks
       {{"pcf.mode=grid", "pcf.taps=16", "pcf.radius=2", "pcf.early_out=false"}, "gather"},
+      {{"pcf.mode=grid", "pcf.taps=16", "pcf.radius=2"}, "gather"},  // corners only, early out
+      {{"pcf.mode=grid", "pcf.taps=4", "pcf.radius=1"}, "gather"},   // 2 x 2: one lookup
       {{"pcf.mode=grid", "pcf.taps=64", "pcf.radius=4"}, "gather"},  // the loop between corners
       {{"pcf.mode=grid", "pcf.taps=49", "pcf.radius=3.5", "pcf.early_out=false"}, "gather"},
       {{"pcf.mode=grid", "pcf.taps=16", "pcf.radius=2.3"}, "compare"},  // not adjacent texels

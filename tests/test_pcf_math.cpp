@@ -192,8 +192,9 @@ TEST(PcfMath, GatherTakesAGridWhoseTapsAreAdjacentTexels) {
   EXPECT_EQ(gatherGridSide(Mode::Grid, 3, 1.5f), 3);
   EXPECT_EQ(gatherGridSide(Mode::Grid, 8, 4.0f), 8);
   const auto offsets = tapOffsets(Mode::Grid, 9, 1.5f);
-  // -1, 0, 1: adjacent texels, up to the rounding of (2/3) * 1.5 in floats (a tap within 1e-7
-  // texel of a texel's edge may pick its neighbour where the gathered block does not).
+  // -1, 0, 1: adjacent texels, up to the rounding of (2/3) * 1.5 in floats. The shader's
+  // s + offset / size rounds too (about size * 2^-24 texel): a tap that close to a texel's
+  // edge may pick its neighbour where the gathered block does not.
   for (const glm::vec2& o : offsets) {
     EXPECT_NEAR(o.x, std::round(o.x), 1e-6);
     EXPECT_NEAR(o.y, std::round(o.y), 1e-6);

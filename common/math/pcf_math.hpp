@@ -94,9 +94,9 @@ enum class Mode { None, Hw2x2, Grid, Dithered, Poisson };
 inline const std::vector<std::string> kModeNames = {"none", "hw2x2", "grid", "dithered", "poisson"};
 
 // pcf.lookup's choices (lesson 05): how a tap reads the map. compare: a sampler2DShadow, the
-// texture unit compares; fetch: texelFetch of the nearest texel and a compare in the shader
-// (LearnOpenGL's way); gather: textureGather with a reference, the four compares of a 2 x 2
-// block in one call (GL 4.0, ES 3.1).
+// texture unit compares; fetch: the nearest texel's depth through a sampler without compare
+// and a compare in the shader (LearnOpenGL's way); gather: textureGather with a reference, the four
+// compares of a 2 x 2 block in one call (GL 4.0, ES 3.1).
 enum class Lookup { Compare, Fetch, Gather };
 inline const std::vector<std::string> kLookupNames = {"compare", "fetch", "gather"};
 

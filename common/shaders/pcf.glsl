@@ -1,5 +1,5 @@
 // Percentage-closer filtering (Reeves 1987; seed 000 "Hardware Shadow Map Filtering"): compare
-// first, then average the results, never the depths. Every tap is one sampler2DShadow lookup.
+// first, then average the results, never the depths. Every tap is one lookup (PCF_LOOKUP below).
 // The tap offsets are not computed here: pcf_math.hpp (unitTapOffsets) computes them on the
 // CPU and main.cpp compiles them in, so the unit tests check the very offsets the shader uses.
 #include "border.glsl"
