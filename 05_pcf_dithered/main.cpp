@@ -158,8 +158,7 @@ class PcfDithered final : public Lesson {
       ImGui::Text("       skipped: %lld facing away, %lld after 4 probes",
                   count("pcf_skipped_facing_away"), count("pcf_stopped_early"));
     }
-    const auto used = static_cast<size_t>(lookup_used_.lookup);
-    ImGui::Text("lookup: %s", pcf::kLookupNames[used].c_str());
+    ImGui::Text("lookup: %s", lookupUsedName().c_str());
     if (!lookup_used_.why.empty())
       ImGui::TextWrapped("  (not %s: %s)", lookup_.name().c_str(), lookup_used_.why.c_str());
     const ErrorState& error = f.runner.lastError();
@@ -201,7 +200,7 @@ class PcfDithered final : public Lesson {
 
   void report(JsonWriter& json) const override {
     json.value("kernel_half_width_texels", kernel_texels_);
-    json.value("pcf_lookup_used", pcf::kLookupNames[static_cast<size_t>(lookup_used_.lookup)]);
+    json.value("pcf_lookup_used", lookupUsedName());
     json.value("pcf_lookup_fallback", lookup_used_.why);
     json.value("truth_area_radius", match_.radius);
     json.value("match_occluder_distance", match_.occluder_distance);
@@ -241,12 +240,13 @@ class PcfDithered final : public Lesson {
     }
     return {pcf::Lookup::Gather, ""};
   }
+  const std::string& lookupUsedName() const {
+    return pcf::kLookupNames[static_cast<size_t>(lookup_used_.lookup)];
+  }
   // pcf.lookup's #defines for the lookup that runs (PCF_LOOKUP_..., pcf.glsl), and the
   // gathered grid's side.
   std::vector<std::string> lookupDefines(int grid) const {
-    const auto used = static_cast<size_t>(lookup_used_.lookup);
-    std::vector<std::string> d =
-        choiceDefines("pcf.lookup", pcf::kLookupNames, pcf::kLookupNames[used]);
+    std::vector<std::string> d = choiceDefines("pcf.lookup", pcf::kLookupNames, lookupUsedName());
     if (lookup_used_.lookup == pcf::Lookup::Gather) d.push_back(define("PCF_GATHER_SIDE", grid)[0]);
     return d;
   }

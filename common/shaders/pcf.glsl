@@ -71,7 +71,8 @@ float blockTexel(vec4 g, int i, int j) {
 // The taps of block (bx, by) inside the n x n grid: an odd side's last blocks are half in.
 float blockSum(vec4 g, int bx, int by, int n) {
   bool x1 = 2 * bx + 1 < n, y1 = 2 * by + 1 < n;
-  return g.w + (x1 ? g.z : 0.0) + (y1 ? g.x : 0.0) + (x1 && y1 ? g.y : 0.0);
+  return blockTexel(g, 0, 0) + (x1 ? blockTexel(g, 1, 0) : 0.0) +
+         (y1 ? blockTexel(g, 0, 1) : 0.0) + (x1 && y1 ? blockTexel(g, 1, 1) : 0.0);
 }
 
 // The grid of PCF_GATHER_SIDE^2 taps on adjacent texels (pcf_math.hpp gatherGridSide), block by
@@ -94,8 +95,6 @@ float pcfGatherGrid(vec3 c, float radius) {
   float corners = c00.w + blockTexel(c10, far, 0) + blockTexel(c01, 0, far) +
                   blockTexel(c11, far, far);
   gStopped = corners == 0.0 || corners == 4.0;
-#endif
-#if PCF_EARLY_OUT == 1
   if (m > 2) {
     // The blocks between the corners, in a loop llvmpipe leaves once no pixel of its vector is
     // still in it (pcfKernel's early out); its start is one the compiler cannot know (always
