@@ -200,17 +200,17 @@ TEST(Lesson03, ThePanelsFrameTimeIsTheReports) {
   auto runner = startLesson(kLesson, {}, 320, 240, /*panel=*/true);
   runner->renderFrame();
   runner->measure().clearHistory();
-  EXPECT_EQ(runner->costSummary(), "frame: measuring...");
+  EXPECT_EQ(runner->window().costSummary(), "frame: measuring...");
   for (int frames = 1; frames <= 3; ++frames) {
     runner->renderFrame();
     // The panel prints two decimals, the report six digits: reprinting the report's number
     // could round the other way at a boundary (7.475), so compare at the panel's precision.
     double panel_ms = -1.0;
     int panel_frames = 0;
-    ASSERT_EQ(std::sscanf(runner->costSummary().c_str(), "frame %lf ms (median of %d)", &panel_ms,
-                          &panel_frames),
+    ASSERT_EQ(std::sscanf(runner->window().costSummary().c_str(), "frame %lf ms (median of %d)",
+                          &panel_ms, &panel_frames),
               2)
-        << runner->costSummary();
+        << runner->window().costSummary();
     EXPECT_NEAR(panel_ms, reportNumber(*runner, "frame_ms"), 0.005 + 1e-9);
     EXPECT_EQ(panel_frames, frames);
   }

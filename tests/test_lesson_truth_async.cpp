@@ -25,11 +25,11 @@ TEST(TruthOffTheRenderThread, FramesGoOnWhileItIsTracedAndTheResultIsTheBlocking
 
     auto runner = testing::startLesson(lesson, {}, 160, 120);
     runner->renderFrame();
-    runner->beginErrorMeasure();
-    EXPECT_TRUE(runner->truth().running());
-    runner->beginErrorMeasure();  // one job at a time: a second call changes nothing
-    while (!runner->pollErrorMeasure()) runner->renderFrame();  // frames while it traces
-    EXPECT_FALSE(runner->truth().running());
+    runner->errors().begin();
+    EXPECT_TRUE(runner->errors().truth().running());
+    runner->errors().begin();  // one job at a time: a second call changes nothing
+    while (!runner->errors().poll()) runner->renderFrame();  // frames while it traces
+    EXPECT_FALSE(runner->errors().truth().running());
     ASSERT_TRUE(runner->lastError().valid) << lesson;
     expectSameMetrics(runner->lastError().metrics, expected, lesson);
     EXPECT_EQ(runner->glErrors(), 0) << lesson;
@@ -39,7 +39,7 @@ TEST(TruthOffTheRenderThread, FramesGoOnWhileItIsTracedAndTheResultIsTheBlocking
 TEST(TruthOffTheRenderThread, ASliderMovedDuringTheTraceLeavesItStaleAndTheNextMeasureIsNew) {
   auto runner = testing::startLesson("03_shadow_map_basic", {}, 160, 120);
   runner->renderFrame();
-  runner->beginErrorMeasure();
+  runner->errors().begin();
   ASSERT_EQ(runner->params().set("light.pos", "2,7,3"), "");  // while the rays are traced
   runner->renderFrame();
   const ErrorMetrics stale = runner->measureError().metrics;  // waits, then measures anew
@@ -54,10 +54,10 @@ TEST(TruthOffTheRenderThread, ATruthBuiltForGeometryThatMovedMeanwhileIsNotKept)
   // builds its Truth from the old triangles; it must not be kept for the new ones.
   auto runner = testing::startLesson("01_projected_planar", {}, 160, 120);
   runner->renderFrame();
-  runner->beginErrorMeasure();
+  runner->errors().begin();
   ASSERT_EQ(runner->params().set("plane.tilt", "20"), "");
   runner->renderFrame();  // moves the receiver: the runner drops its truth
-  while (!runner->pollErrorMeasure()) runner->renderFrame();
+  while (!runner->errors().poll()) runner->renderFrame();
   const ErrorMetrics tilted = runner->measureError().metrics;
 
   auto fresh = testing::startLesson("01_projected_planar", {"plane.tilt=20"}, 160, 120);

@@ -36,13 +36,14 @@ void failed(const std::string& line) {
 std::string errorSummary() {
   if (!shadows::haveTruth()) return shadows::truthUnavailable();
   char line[160];
-  if (g_runner->truth().running()) {
+  if (g_runner->errors().truth().running()) {
     std::snprintf(line, sizeof line, "tracing the truth (three-mesh-bvh, in Web Workers): %.0f %%",
-                  100.0 * g_runner->errorMeasureProgress());
+                  100.0 * g_runner->errors().progress());
     return line;
   }
   const shadows::ErrorState& error = g_runner->lastError();
-  if (g_runner->truth().failed()) return "the ray tracer failed: the browser's console says why";
+  if (g_runner->errors().truth().failed())
+    return "the ray tracer failed: the browser's console says why";
   if (!error.valid) return "";
   // Lesson 08's air is measured on its own pixels, counted surfaces or not.
   char air[64] = "";
@@ -74,8 +75,8 @@ std::string exerciseSummary() {
 // cost lines four times a second or so.
 void publish() {
   const bool text = g_frames % 15 == 1;
-  const std::string cost = text ? g_runner->costSummary() : std::string();
-  const std::string counters = text ? g_runner->counterSummary() : std::string();
+  const std::string cost = text ? g_runner->window().costSummary() : std::string();
+  const std::string counters = text ? g_runner->window().counterSummary() : std::string();
   const std::string error = text ? errorSummary() + exerciseSummary() : std::string();
   EM_ASM(
       {
@@ -83,7 +84,7 @@ void publish() {
                           UTF8ToString($6));
       },
       static_cast<double>(g_frames), shadows::GlErrorLog::count(),
-      static_cast<double>(g_runner->truth().measured()), text ? 1 : 0, cost.c_str(),
+      static_cast<double>(g_runner->errors().truth().measured()), text ? 1 : 0, cost.c_str(),
       counters.c_str(), error.c_str());
 }
 

@@ -1,6 +1,8 @@
 // What the truth needs of the GPU, read back on the render thread (the lesson's visibility and
 // shaded picture, the surfaces, 08's air, the texel pass), and the measure run on a thread or a
 // page's worker; truth_measure.cpp traces and compares.
+#include "run/error_measure.hpp"
+
 #include "run/runner.hpp"
 
 #include "core/spotlight.hpp"
@@ -47,11 +49,11 @@ std::vector<float> Runner::renderRed(const std::string& mode) {
   return red;
 }
 
-std::string Runner::errorKey() const {
+std::string ErrorMeasure::key() const {
   // Everything that can change the picture: every parameter but the view, and the size.
-  std::string key = std::to_string(options_.width) + "x" + std::to_string(options_.height);
+  std::string key = std::to_string(r_.options_.width) + "x" + std::to_string(r_.options_.height);
   char value[40];
-  for (const auto& p : params_.all()) {
+  for (const auto& p : r_.params_.all()) {
     if (p.name == "view") continue;
     // Full precision: text() rounds to 6 digits, and nearby values must not share a key.
     key += ";" + p.name + "=" + p.string_value;
@@ -63,22 +65,22 @@ std::string Runner::errorKey() const {
   return key;
 }
 
-TruthInputs Runner::gatherTruthInputs() {
+TruthInputs ErrorMeasure::gatherInputs() {
   TruthInputs in;
-  in.key = errorKey();
-  const int w = options_.width, h = options_.height;
+  in.key = key();
+  const int w = r_.options_.width, h = r_.options_.height;
   const size_t n = static_cast<size_t>(w) * h;
   in.width = w, in.height = h;
-  const bool was_enabled = measure_->enabled();
-  measure_->setEnabled(false);
+  const bool was_enabled = r_.measure_->enabled();
+  r_.measure_->setEnabled(false);
 
-  texels_.measure();  // what the panel shows next to the error, measured when it is
+  r_.texels_.measure();  // what the panel shows next to the error, measured when it is
   // The lesson's shadow term, and its shaded picture in float to catch NaN and Inf.
-  in.rendered = renderVisibility();
-  const GLuint fbo = gpu_->float_target->id();
+  in.rendered = r_.renderVisibility();
+  const GLuint fbo = r_.gpu_->float_target->id();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  renderInto(fbo, w, h, "shaded", false, false);
+  r_.renderInto(fbo, w, h, "shaded", false, false);
   in.shaded.resize(n);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
@@ -87,22 +89,22 @@ TruthInputs Runner::gatherTruthInputs() {
   // The surface seen by each pixel, from the runner's own geometry pass.
   TruthJob& job = in.job;
   job.surface = {w, h, std::vector<glm::vec4>(n), std::vector<glm::vec4>(n)};
-  gpu_->surface->bind();
+  r_.gpu_->surface->bind();
   glViewport(0, 0, w, h);
   const float clear_position[4] = {0, 0, 0, -1};
   const float clear_normal[4] = {0, 0, 0, 0};
-  resetGlState();  // whatever the lesson left set must not shape the truth's surfaces
+  r_.resetGlState();  // whatever the lesson left set must not shape the truth's surfaces
   glClearBufferfv(GL_COLOR, 0, clear_position);
   glClearBufferfv(GL_COLOR, 1, clear_normal);
   glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  const Light light = currentLight();
-  Frame frame(*this, params_, scene_, *measure_, light);
-  frame.eye = params_.at("camera.pos").v();  // drawn in the order the lesson's eye pass was
+  const Light light = r_.currentLight();
+  Frame frame(r_, r_.params_, r_.scene_, *r_.measure_, light);
+  frame.eye = r_.params_.at("camera.pos").v();  // drawn in the order the lesson's eye pass was
   // The very camera the lesson drew with, or truth and picture would not line up.
-  gpu_->gbuffer.set("uViewProjection", cameraProjection(w, h) * cameraView());
-  gpu_->gbuffer.set("uHasLightFrustum", told_.light_frustum ? 1 : 0);
-  gpu_->gbuffer.set("uLightViewProjection", told_.light_frustum.value_or(glm::mat4(1.0f)));
-  drawObjects(frame, gpu_->gbuffer, Objects::All, nullptr);
+  r_.gpu_->gbuffer.set("uViewProjection", r_.cameraProjection(w, h) * r_.cameraView());
+  r_.gpu_->gbuffer.set("uHasLightFrustum", r_.told_.light_frustum ? 1 : 0);
+  r_.gpu_->gbuffer.set("uLightViewProjection", r_.told_.light_frustum.value_or(glm::mat4(1.0f)));
+  r_.drawObjects(frame, r_.gpu_->gbuffer, Objects::All, nullptr);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, job.surface.position.data());
   glReadBuffer(GL_COLOR_ATTACHMENT1);
@@ -110,95 +112,96 @@ TruthInputs Runner::gatherTruthInputs() {
 
   // The triangles always travel with the job (a tracer built for them is kept in truth_
   // while the scene stays): a job is whole wherever it is traced.
-  scene_.worldTriangles(job.positions, job.triangles);
-  job.scene_radius = scene_.bounds().radius();
+  r_.scene_.worldTriangles(job.positions, job.triangles);
+  job.scene_radius = r_.scene_.bounds().radius();
   in.truth = truth_.tracerFor(job);
   in.given = truth_.given;
-  in.keep_bytes = !options_.truth_job.empty() || !options_.truth_result.empty();
+  in.keep_bytes = !r_.options_.truth_job.empty() || !r_.options_.truth_result.empty();
   job.light.position = light.position;
   job.light.direction = light.direction;
   job.light.directional = light.directional;
-  job.light.radius = told_.truth_area_radius;
+  job.light.radius = r_.told_.truth_area_radius;
   job.light.samples = 64;
   in.truth_name = light.directional ? "directional" : "point";
-  if (told_.truth_area_radius > 0.0f) {
+  if (r_.told_.truth_area_radius > 0.0f) {
     char name[64];
-    std::snprintf(name, sizeof name, "area r=%g n=%d", told_.truth_area_radius, job.light.samples);
+    std::snprintf(name, sizeof name, "area r=%g n=%d", r_.told_.truth_area_radius,
+                  job.light.samples);
     in.truth_name = name;
   }
-  if (told_.medium) {
+  if (r_.told_.medium) {
     // The lesson's air light alone, unscaled, against single scattering traced along the
     // very eye rays of its pixels.
     TruthJob::Air air;
-    air.medium = *told_.medium;
+    air.medium = *r_.told_.medium;
     air.medium.spot = nullptr;
     // A copy of the spot texture: the lesson may load another while the truth is traced.
-    if (told_.medium->spot != nullptr) air.spot = *told_.medium->spot;
-    air.eye = params_.at("camera.pos").v();
-    air.inverse_view_projection = glm::inverse(cameraProjection(w, h) * cameraView());
+    if (r_.told_.medium->spot != nullptr) air.spot = *r_.told_.medium->spot;
+    air.eye = r_.params_.at("camera.pos").v();
+    air.inverse_view_projection = glm::inverse(r_.cameraProjection(w, h) * r_.cameraView());
     job.air = std::move(air);
-    in.air_rendered = renderRed("air");
+    in.air_rendered = r_.renderRed("air");
   }
-  measure_->setEnabled(was_enabled);
+  r_.measure_->setEnabled(was_enabled);
   return in;
 }
 
-const ErrorState& Runner::measureError() {
+const ErrorState& ErrorMeasure::measure() {
   if (!haveTruth()) {  // nothing to measure against: the views and the panel say so
     truth_.clear();
     return truth_.error();
   }
   // A window's job: wait for it.
-  if (truth_.thread_job.valid()) truth_.install(truth_.thread_job.get(), errorKey());
+  if (truth_.thread_job.valid()) truth_.install(truth_.thread_job.get(), key());
   // A page cannot wait for its worker; its answer, when it comes, answers no job any more.
   truth_.page_job.reset();
-  if (truth_.current(errorKey())) {
-    exercise_.judge();
+  if (truth_.current(key())) {
+    r_.exercise_.judge();
     return truth_.error();
   }
-  TruthResult result = traceTruth(gatherTruthInputs());
-  truth_.install(std::move(result), errorKey());
-  exercise_.judge();
+  install(traceTruth(gatherInputs()));
   return truth_.error();
+}
+
+void ErrorMeasure::install(TruthResult result) {
+  truth_.install(std::move(result), key());
+  r_.exercise_.judge();
 }
 
 #ifndef __EMSCRIPTEN__
 
-void Runner::beginErrorMeasure() {
+void ErrorMeasure::begin() {
   if (truth_.running() || !haveTruth()) return;
-  truth_.thread_job = std::async(std::launch::async, &traceTruth, gatherTruthInputs());
+  truth_.thread_job = std::async(std::launch::async, &traceTruth, gatherInputs());
 }
 
-bool Runner::pollErrorMeasure() {
+bool ErrorMeasure::poll() {
   if (!truth_.thread_job.valid() ||
       truth_.thread_job.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
     return false;
   }
-  truth_.install(truth_.thread_job.get(), errorKey());
-  exercise_.judge();
+  install(truth_.thread_job.get());
   return true;
 }
 
-double Runner::errorMeasureProgress() const {
+double ErrorMeasure::progress() const {
   return -1.0;
 }
 
 #else  // a page: no threads, so the rays are traced by its Web Worker (web/truth/page.mjs)
 
-void Runner::beginErrorMeasure() {
+void ErrorMeasure::begin() {
   if (truth_.running() || !haveTruth()) return;
-  auto inputs = std::make_shared<TruthInputs>(gatherTruthInputs());
+  auto inputs = std::make_shared<TruthInputs>(gatherInputs());
   if (postTruthJob(serializeTruthJob(inputs->job))) {
     truth_.page_job = std::move(inputs);
   } else {
     // No worker: on this thread, the page waits.
-    TruthResult result = traceTruth(std::move(*inputs));
-    truth_.install(std::move(result), errorKey());
-    exercise_.judge();
+    install(traceTruth(std::move(*inputs)));
   }
 }
 
-bool Runner::pollErrorMeasure() {
+bool ErrorMeasure::poll() {
   if (!truth_.page_job) return false;
   PageTraceAnswer answer = takeTruthTrace();
   if (answer.state == PageTraceAnswer::State::kNone) return false;
@@ -209,13 +212,11 @@ bool Runner::pollErrorMeasure() {
     return false;
   }
   inputs->given = parseTruthTrace(answer.trace_bytes);
-  TruthResult result = traceTruth(std::move(*inputs));
-  truth_.install(std::move(result), errorKey());
-  exercise_.judge();
+  install(traceTruth(std::move(*inputs)));
   return true;
 }
 
-double Runner::errorMeasureProgress() const {
+double ErrorMeasure::progress() const {
   return truth_.page_job ? std::max(truthTraceProgress(), 0.0) : -1.0;
 }
 

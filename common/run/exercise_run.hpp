@@ -40,6 +40,7 @@ class ExerciseRun {
 
  private:
   friend class Runner;
+  friend class ErrorMeasure;
   void pick(int n);    // the command line's exercise, before any setting is applied
   void judge();        // after a truth is installed: the verdict on it, once per truth
   void lockWidgets();  // the panel's sliders the exercise does not allow, locked

@@ -90,7 +90,7 @@ std::string ExerciseRun::choose(int n) {
     }
   }
   // Where the truth already measured is this very start, its verdict now, not "measuring...".
-  if (chosen_ && runner_.truth_.key() == runner_.errorKey()) judge();
+  if (chosen_ && runner_.errors_.truth().key() == runner_.errors_.key()) judge();
   // Judged on the grader's picture size (a page fits its canvas so too: page_main.cpp).
   if (n > 0 && !runner_.options_.size_given) runner_.window_.fitExercise();
   return problem;
@@ -149,7 +149,7 @@ std::string ExerciseRun::query() const {
 }
 
 void ExerciseRun::judge() {
-  const TruthMeasure& truth = runner_.truth_;
+  const TruthMeasure& truth = runner_.errors_.truth();
   if (!chosen_ || judged_at_ == truth.measured()) return;
   JsonWriter json;
   runner_.writeReport(json);  // the verdict reads the report's own numbers
@@ -160,10 +160,10 @@ void ExerciseRun::judge() {
 // --grade N: the headless run (its picture, outputs and summary line), then the verdict of
 // exercise N on its truth, one line, and the exit code: 0 met, 1 not.
 int ExerciseRun::grade() {
-  if (const int code = runner_.runHeadless(); code != 0) return code;
+  if (const int code = runner_.headless_.run(); code != 0) return code;
   const std::string& name = runner_.name_;
   const int n = runner_.options_.exercise;
-  if (!runner_.truth_.error().valid) {
+  if (!runner_.errors_.truth().error().valid) {
     std::printf("%s exercise %d: no verdict: %s\n", name.c_str(), n,
                 haveTruth() ? "the truth was not measured" : truthUnavailable().c_str());
     return 1;

@@ -205,7 +205,7 @@ void Runner::setObjectModel(size_t index, const glm::mat4& model) {
   SceneObject& object = scene_.objects.at(index);
   if (object.model == model) return;
   object.model = model;
-  truth_.forgetScene();                // the truth's triangles are in world space
+  errors_.truth().forgetScene();       // the truth's triangles are in world space
   params_.markDirty(kDirtyShadowMap);  // a moved caster moves its shadow
 }
 

@@ -1,4 +1,6 @@
 // Running headless, the report, and every output of a run, all or nothing.
+#include "run/headless_run.hpp"
+
 #include "run/runner.hpp"
 
 #include "run/runner_gpu.hpp"
@@ -93,8 +95,8 @@ void Runner::writeReport(JsonWriter& json) {
     writeTexelsPerPixel(json, t);
     json.value("undersampled_pct", t.pixels > 0 ? t.undersampled_pct : kNoFigure);
   }
-  if (truth_.error().valid) {
-    const ErrorMetrics& e = truth_.error().metrics;
+  if (errors_.truth().error().valid) {
+    const ErrorMetrics& e = errors_.truth().error().metrics;
     json.beginObject("error");
     json.value("truth", e.truth);
     // A share of no pixel is no figure: null, and why (a zero would read as "no error").
@@ -120,10 +122,10 @@ void Runner::writeReport(JsonWriter& json) {
     // The lesson's regions, after the whole frame's figures so that a first match of a
     // metric's name is the frame's; only from pixels of this very frame (a window's error may
     // be stale while the lesson's regions are not).
-    if (truth_.error().pixels && truth_.key() == errorKey()) {
+    if (errors_.truth().error().pixels && errors_.truth().key() == errors_.key()) {
       for (const ErrorRegion& region : lesson_->errorRegions()) {
-        const ErrorMetrics r =
-            compareVisibilityIn(*truth_.error().pixels, region.inside, region.pixel_inside);
+        const ErrorMetrics r = compareVisibilityIn(*errors_.truth().error().pixels, region.inside,
+                                                   region.pixel_inside);
         json.beginObject(region.name);
         json.value("counted_pixels", r.counted_pixels);
         json.value("false_shadow_pct", r.counted_pixels > 0 ? r.false_shadow_pct : kNoFigure);
@@ -141,7 +143,7 @@ void Runner::writeReport(JsonWriter& json) {
   }
   lesson_->reportPixels(json, {options_.width, options_.height, texels_.measure()});
   // The exercise's verdict on these very numbers (lesson/exercise.hpp), last: it reads them.
-  if (exercise_.chosen() && truth_.error().valid) {
+  if (exercise_.chosen() && errors_.truth().error().valid) {
     const Exercise& ex = *exercise_.chosen();
     const Verdict v = evaluate(ex, json);
     json.beginObject("exercise");
@@ -159,25 +161,10 @@ void Runner::writeReport(JsonWriter& json) {
   json.endObject();
 }
 
-void Runner::saveScreenshot(int width, int height, const std::string& file) {
-  Image image{width, height, std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 4)};
-  glBindFramebuffer(GL_FRAMEBUFFER, window_.is_open ? 0 : gpu_->target->id());
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-  const std::string path =
-      file.empty() ? name_ + "_screenshot_" + std::to_string(++window_.screenshots_taken) + ".png"
-                   : file;
-  if (writePng(path, image)) {
-    std::printf("screenshot: %s\n", path.c_str());
-  } else {
-    std::fprintf(stderr, "screenshot: cannot write %s\n", path.c_str());
-  }
-}
-
 int Runner::run() {
   if (!options_.truth_from.empty()) {
     try {
-      truth_.given = readTruthTrace(options_.truth_from);
+      errors_.truth().given = readTruthTrace(options_.truth_from);
     } catch (const std::invalid_argument& e) {
       std::fprintf(stderr, "%s: --truth-from: %s\n", name_.c_str(), printable(e.what()).c_str());
       return 2;
@@ -196,7 +183,7 @@ int Runner::runHeadlessOrWindow() {
   const bool has_display = display != nullptr && *display != '\0';
   if (options_.headless || (!has_display && !options_.force_window)) {
     if (!options_.headless) std::printf("%s: no display, rendering headless\n", name_.c_str());
-    return runHeadless();
+    return headless_.run();
   }
   const int result = window_.run();
   if (result != RunnerWindow::kNoWindow) return result;
@@ -208,65 +195,82 @@ int Runner::runHeadlessOrWindow() {
   // A DISPLAY that leads nowhere (a closed ssh tunnel, a stale variable): say so once, go on.
   std::printf("%s: cannot open a window on DISPLAY=%s (%s), rendering headless\n", name_.c_str(),
               has_display ? printable(display).c_str() : "", why.c_str());
-  return runHeadless();
+  return headless_.run();
 }
 
-int Runner::runHeadless() {
+void HeadlessRun::saveScreenshot(int width, int height, const std::string& file) {
+  Image image{width, height, std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 4)};
+  glBindFramebuffer(GL_FRAMEBUFFER, r_.window_.is_open ? 0 : r_.gpu_->target->id());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  const std::string path =
+      file.empty()
+          ? r_.name_ + "_screenshot_" + std::to_string(++r_.window_.screenshots_taken) + ".png"
+          : file;
+  if (writePng(path, image)) {
+    std::printf("screenshot: %s\n", path.c_str());
+  } else {
+    std::fprintf(stderr, "screenshot: cannot write %s\n", path.c_str());
+  }
+}
+
+int HeadlessRun::run() {
   // Without --out the picture goes where ./run.sh puts them, out/<lesson>.png (git-ignored):
   // checked against the other outputs like a given --out, before anything is rendered.
-  std::string out = options_.out;
+  std::string out = r_.options_.out;
   if (out.empty()) {
     std::error_code ec;
     std::filesystem::create_directories("out", ec);
-    out = "out/" + name_ + ".png";
+    out = "out/" + r_.name_ + ".png";
     OutputTarget picture, other;
     if (const std::string why = resolveOutput(out, picture); !why.empty()) {
-      std::fprintf(stderr, "%s: cannot write '%s' (%s)\n", name_.c_str(), out.c_str(), why.c_str());
+      std::fprintf(stderr, "%s: cannot write '%s' (%s)\n", r_.name_.c_str(), out.c_str(),
+                   why.c_str());
       return 2;
     }
     for (const auto& [flag, path] :
-         {std::pair<const char*, const std::string*>{"--report", &options_.report},
-          {"--truth-out", &options_.truth_out},
-          {"--error-out", &options_.error_out},
-          {"--truth-job", &options_.truth_job},
-          {"--truth-result", &options_.truth_result}}) {
+         {std::pair<const char*, const std::string*>{"--report", &r_.options_.report},
+          {"--truth-out", &r_.options_.truth_out},
+          {"--error-out", &r_.options_.error_out},
+          {"--truth-job", &r_.options_.truth_job},
+          {"--truth-result", &r_.options_.truth_result}}) {
       if (path->empty() || !resolveOutput(*path, other).empty()) continue;
       if (picture.sameFileAs(other)) {
-        std::fprintf(stderr, "%s: %s names the default picture %s; give --out\n", name_.c_str(),
+        std::fprintf(stderr, "%s: %s names the default picture %s; give --out\n", r_.name_.c_str(),
                      flag, out.c_str());
         return 2;
       }
     }
   }
-  initHeadless();
-  renderFrame();  // warm-up: shader JIT and the first shadow map land here
-  baseline_.render();
+  r_.initHeadless();
+  r_.renderFrame();  // warm-up: shader JIT and the first shadow map land here
+  r_.baseline_.render();
   // A snapshot with the panel should show the error numbers, so measure them first.
-  if (options_.panel && options_.truth) measureError();
-  measure_->clearHistory();
-  baseline_.measure().clearHistory();
-  for (int i = 0; i < options_.frames; ++i) {
-    baseline_.render();  // interleaved with the frames it is compared with; first, as the
-    renderFrame();       // picture is read from the same target
+  if (r_.options_.panel && r_.options_.truth) r_.measureError();
+  r_.measure_->clearHistory();
+  r_.baseline_.measure().clearHistory();
+  for (int i = 0; i < r_.options_.frames; ++i) {
+    r_.baseline_.render();  // interleaved with the frames it is compared with; first, as the
+    r_.renderFrame();       // picture is read from the same target
   }
   // The panel shows the run's medians, the numbers the report gives: it is drawn once more,
   // untimed, after the last timed frame.
-  if (options_.panel) renderFrame(/*timed=*/false);
-  const Image image = readImage();
+  if (r_.options_.panel) r_.renderFrame(/*timed=*/false);
+  const Image image = r_.readImage();
   // Asking for the truth or error picture (or its job) asks for the truth, --no-truth or not.
-  if (options_.truthAsked()) measureError();
+  if (r_.options_.truthAsked()) r_.measureError();
   if (!writeOutputs(out, image)) return 1;
-  const int errors = glErrors();
-  std::printf("%-30s %dx%d  frame %7.2f ms", out.c_str(), options_.width, options_.height,
-              measure_->medianFrameMs());
-  const auto& counts = measure_->lastFrameCounts();
+  const int errors = r_.glErrors();
+  std::printf("%-30s %dx%d  frame %7.2f ms", out.c_str(), r_.options_.width, r_.options_.height,
+              r_.measure_->medianFrameMs());
+  const auto& counts = r_.measure_->lastFrameCounts();
   if (const auto it = counts.find("shadow_map_renders"); it != counts.end() && it->second == 0) {
     std::printf(" (map cached)");
   }
-  if (const double overhead = baseline_.overhead(); overhead > 0.0) {
+  if (const double overhead = r_.baseline_.overhead(); overhead > 0.0) {
     std::printf(", %.2fx without shadow", overhead);
   }
-  const ErrorState& error = truth_.error();
+  const ErrorState& error = r_.errors().truth().error();
   if (error.valid && error.metrics.counted_pixels == 0) {
     std::printf("  error: none counted (%s)", notCountedReason(error.metrics).c_str());
   } else if (error.valid) {
@@ -275,31 +279,34 @@ int Runner::runHeadless() {
   }
   std::printf("  gl_errors %d\n", errors);
   if (errors > 0) {
-    std::fprintf(stderr, "%s: %d GL error(s), last: %s\n", name_.c_str(), errors,
+    std::fprintf(stderr, "%s: %d GL error(s), last: %s\n", r_.name_.c_str(), errors,
                  GlErrorLog::last().c_str());
     return 1;
   }
   return 0;
 }
 
-bool Runner::writeOutputs(const std::string& out, const Image& image) {
+bool HeadlessRun::writeOutputs(const std::string& out, const Image& image) {
   // Every output of the run, or none: a picture without its report is a half answer.
   OutputBatch batch;
+  const TruthMeasure& truth = r_.errors().truth();
   if (!out.empty()) batch.add(out, encodePng(image));
-  if (!options_.truth_out.empty()) batch.add(options_.truth_out, encodePng(truth_.truthImage()));
-  if (!options_.error_out.empty()) batch.add(options_.error_out, encodePng(truth_.errorImage()));
-  if (!options_.truth_job.empty())
-    batch.add(options_.truth_job, {truth_.jobBytes().begin(), truth_.jobBytes().end()});
-  if (!options_.truth_result.empty()) {
-    batch.add(options_.truth_result, {truth_.traceBytes().begin(), truth_.traceBytes().end()});
+  if (!r_.options_.truth_out.empty())
+    batch.add(r_.options_.truth_out, encodePng(truth.truthImage()));
+  if (!r_.options_.error_out.empty())
+    batch.add(r_.options_.error_out, encodePng(truth.errorImage()));
+  if (!r_.options_.truth_job.empty())
+    batch.add(r_.options_.truth_job, {truth.jobBytes().begin(), truth.jobBytes().end()});
+  if (!r_.options_.truth_result.empty()) {
+    batch.add(r_.options_.truth_result, {truth.traceBytes().begin(), truth.traceBytes().end()});
   }
-  if (!options_.report.empty()) {
+  if (!r_.options_.report.empty()) {
     JsonWriter json;
-    writeReport(json);
-    batch.add(options_.report, json.str() + "\n");
+    r_.writeReport(json);
+    batch.add(r_.options_.report, json.str() + "\n");
   }
   if (batch.commit()) return true;
-  std::fprintf(stderr, "%s: %s\n", name_.c_str(), batch.failure().c_str());
+  std::fprintf(stderr, "%s: %s\n", r_.name_.c_str(), batch.failure().c_str());
   return false;
 }
 

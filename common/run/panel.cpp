@@ -25,12 +25,12 @@
 
 namespace shadows {
 
-std::string Runner::costSummary() const {
+std::string RunnerWindow::costSummary() const {
   // The report's numbers (median of the timed frames so far), so panel and report agree.
-  const size_t frames = measure_->timedFrames();
+  const size_t frames = r_.measure_->timedFrames();
   if (frames == 0) return "frame: measuring...";
   char line[96];
-  std::snprintf(line, sizeof line, "frame %.2f ms (median of %zu)", measure_->medianFrameMs(),
+  std::snprintf(line, sizeof line, "frame %.2f ms (median of %zu)", r_.measure_->medianFrameMs(),
                 frames);
   std::string summary = line;
 #ifdef __EMSCRIPTEN__
@@ -38,20 +38,20 @@ std::string Runner::costSummary() const {
   // is noise, so a page gives none (the native lesson measures it).
   summary += "\nshadow's cost: this browser cannot time the frame (run the lesson natively)";
 #endif
-  if (const double overhead = baseline_.overhead(); overhead > 0.0) {
+  if (const double overhead = r_.baseline_.overhead(); overhead > 0.0) {
     std::snprintf(line, sizeof line, "\nshadow: %.2fx the frame without it (%.2f ms)", overhead,
-                  baseline_.measure().medianFrameMs());
+                  r_.baseline_.measure().medianFrameMs());
     summary += line;
   }
   return summary;
 }
 
-std::string Runner::counterSummary() const {
+std::string RunnerWindow::counterSummary() const {
   std::string counts;
-  for (const auto& [name, count] : measure_->lastFrameCounts()) {
+  for (const auto& [name, count] : r_.measure_->lastFrameCounts()) {
     counts += (counts.empty() ? "" : ", ") + name + " " + std::to_string(count);
   }
-  for (const std::string& name : measure_->lastFrameUnavailable()) {
+  for (const std::string& name : r_.measure_->lastFrameUnavailable()) {
     counts += (counts.empty() ? "" : ", ") + name + " " + caps().unavailable();
   }
   return counts;
@@ -168,7 +168,7 @@ void Runner::drawPanel(Frame& frame) {
   ImGui::TextWrapped("%s", lesson_->seeds().c_str());
   ImGui::PopStyleColor();
   // The two answers every lesson gives, where no scrolling hides them: how wrong, what it costs.
-  const ErrorState& error = truth_.error();
+  const ErrorState& error = errors_.truth().error();
   if (options_.truth) {
     if (error.valid && error.metrics.counted_pixels == 0) {
       ImGui::TextWrapped("error: none counted (%s)", notCountedReason(error.metrics).c_str());
@@ -218,9 +218,10 @@ void Runner::drawPanel(Frame& frame) {
       ImGui::TextDisabled("measuring...");
     } else {
       for (const FigureResult& f : v.figures) wrapped(f.met ? met_colour : unmet_colour, f.line());
-      wrapped(v.met ? met_colour : unmet_colour,
-              std::string(v.met ? "MET" : "not met yet") +
-                  (truth_.key() == errorKey() ? "" : " (measured before the last change)"));
+      wrapped(
+          v.met ? met_colour : unmet_colour,
+          std::string(v.met ? "MET" : "not met yet") +
+              (errors_.truth().key() == errors_.key() ? "" : " (measured before the last change)"));
       // After a minute without it, the hint.
       if (!v.met && !ex->hint.empty() && ImGui::GetTime() > 60.0) {
         ImGui::TextWrapped("hint: %s", ex->hint.c_str());
@@ -297,7 +298,7 @@ void Runner::drawPanel(Frame& frame) {
     params_.drawWidgets([&](const Param& p) { return p.shared && lightOrCamera(p); });
   }
   if (ImGui::CollapsingHeader("Cost", ImGuiTreeNodeFlags_DefaultOpen)) {
-    ImGui::TextWrapped("%s", costSummary().c_str());
+    ImGui::TextWrapped("%s", window_.costSummary().c_str());
     // One line per pass ever run, so widgets never jump around.
     const auto& work = measure_->lastFrameWork();
     for (const auto& [pass, ms] : measure_->medianPassMs()) {
@@ -313,19 +314,19 @@ void Runner::drawPanel(Frame& frame) {
         }
       }
     }
-    ImGui::TextWrapped("%s", counterSummary().c_str());
+    ImGui::TextWrapped("%s", window_.counterSummary().c_str());
   }
   if (!haveTruth() && ImGui::CollapsingHeader("Error", ImGuiTreeNodeFlags_DefaultOpen)) {
     ImGui::TextWrapped("%s", truthUnavailable().c_str());
   }
   if (haveTruth() && options_.truth &&
       ImGui::CollapsingHeader("Error", ImGuiTreeNodeFlags_DefaultOpen)) {
-    if (truth_.running() && errorMeasureProgress() >= 0.0) {
+    if (errors_.truth().running() && errors_.progress() >= 0.0) {
       // A page's worker takes seconds; natively the truth is there before this shows.
-      ImGui::TextDisabled("tracing the truth: %.0f%%", 100.0 * errorMeasureProgress());
+      ImGui::TextDisabled("tracing the truth: %.0f%%", 100.0 * errors_.progress());
     }
-    if (truth_.error().valid) {
-      const ErrorMetrics& e = truth_.error().metrics;
+    if (errors_.truth().error().valid) {
+      const ErrorMetrics& e = errors_.truth().error().metrics;
       if (e.counted_pixels == 0) {
         ImGui::TextWrapped("No pixel counted: %s (is the eye inside an object?)",
                            notCountedReason(e).c_str());
@@ -334,7 +335,7 @@ void Runner::drawPanel(Frame& frame) {
                            e.false_lit_pct);
         ImGui::TextWrapped("vis_mae %.4f  non-finite %lld  counted %lld%s", e.vis_mae,
                            e.nonfinite_pixels, e.counted_pixels,
-                           truth_.key() == errorKey() ? "" : "  (stale: updating)");
+                           errors_.truth().key() == errors_.key() ? "" : "  (stale: updating)");
       }
       if (e.air.valid && !e.air.note.empty()) {
         ImGui::TextWrapped("air: 0 (%s)", e.air.note.c_str());
@@ -345,7 +346,7 @@ void Runner::drawPanel(Frame& frame) {
         ImGui::TextWrapped("air: mae %.4f  rel. RMSE %.1f%% (truth mean %.3f, noise %.4f)",
                            e.air.mae, 100.0 * e.air.rel_rmse, e.air.truth_mean, e.air.truth_noise);
       }
-    } else if (truth_.failed() && truth_.key() == errorKey()) {
+    } else if (errors_.truth().failed() && errors_.truth().key() == errors_.key()) {
       ImGui::TextWrapped("the ray tracer failed: the browser's console says why");
     } else {
       ImGui::TextDisabled("not measured yet");

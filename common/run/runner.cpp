@@ -134,7 +134,7 @@ void Runner::loadScene() {
   params_.setDefaultVec3(params_.at("camera.target"), scene_.camera.target);
   params_.setDefaultFloat(params_.at("camera.fov"), scene_.camera.fov);
   params_.consume(kDirtyScene);
-  truth_.forgetTracer();
+  errors_.truth().forgetTracer();
   if (gpu_) {
     gpu_->meshes.clear();
     for (const auto& object : scene_.objects) gpu_->meshes.emplace_back(object.mesh);
@@ -325,10 +325,11 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
     // A page cannot wait seconds for the rays: it shows the last truth measured while its Web
     // Worker traces the current one, which the window loop starts once the sliders rest (here
     // instead when the page measures no error otherwise, ?no-truth).
-    if (!options_.truth && truth_.key() != errorKey()) beginErrorMeasure();
+    if (!options_.truth && errors_.truth().key() != errors_.key()) errors_.begin();
 #endif
     measure_->setEnabled(timed);
-    const Image& shown = frame.mode == "truth" ? truth_.truthImage() : truth_.errorImage();
+    const Image& shown =
+        frame.mode == "truth" ? errors_.truth().truthImage() : errors_.truth().errorImage();
     if (!haveTruth() || shown.rgba.empty())
       frame.clearTarget(Frame::kNoTruthColor);  // a plain picture; the panel says why
     showImage(frame, shown);

@@ -12,7 +12,9 @@
 
 #include "core/image.hpp"
 #include "lesson/lesson.hpp"
+#include "run/error_measure.hpp"
 #include "run/exercise_run.hpp"
+#include "run/headless_run.hpp"
 #include "run/side_passes.hpp"
 #include "run/truth_measure.hpp"
 #include "run/window.hpp"
@@ -66,27 +68,15 @@ class Runner final : public LessonHost {
   // The frames without shadow the cost is measured against, and the texel-density pass.
   BaselineFrames& baseline() { return baseline_; }
   TexelPass& texels() { return texels_; }
-  // The panel's frame line: the median the report gives ("measuring..." before any frame).
-  std::string costSummary() const;
-  // The last frame's work counters, one line: "name N, ..., name unavailable on gles30".
-  std::string counterSummary() const;
   // Feeds ImGui a mouse state for the next frame (headless tests drive the panel this way).
   void setMouse(glm::vec2 position, bool leftDown);
   // Whether input is moving (the window sets it each frame; tests may too): Frame::input_moving.
   void setInputMoving(bool moving) { input_moving_ = moving; }
-  // Computes visibility, truth and metrics for the current parameters.
-  const ErrorState& measureError();
-  // The same off the frame's critical path (the window): begin renders what the truth needs
-  // (a few ms of GL) and traces it on a worker thread; poll installs the result once it is
-  // there (true then). One job at a time; measureError() waits for a running one.
-  void beginErrorMeasure();
-  bool pollErrorMeasure();
-  // The running measure's progress in [0, 1], or -1 when not known (natively) or none runs.
-  double errorMeasureProgress() const;
-  // The truth and its error as last measured: running(), measured() (how many so far: a page's
-  // tests wait on it), failed() (a page's workers could not trace the current settings).
-  const TruthMeasure& truth() const { return truth_; }
-  const ErrorState& lastError() const override { return truth_.error(); }
+  // The error against the truth for the current parameters, now or off the frame's path.
+  const ErrorState& measureError() { return errors_.measure(); }
+  ErrorMeasure& errors() { return errors_; }
+  const ErrorMeasure& errors() const { return errors_; }
+  const ErrorState& lastError() const override { return errors_.truth().error(); }
   Image readImage() const;
   std::vector<float> renderVisibility();
   // Renders `mode` into the float target and returns its red channel (visibility, air).
@@ -139,11 +129,6 @@ class Runner final : public LessonHost {
   // The object a point light sits on (within 1e-5 of the scene's radius), or "": the report's
   // light_on_surface and the panel's warning.
   std::string lightOnSurface() const;
-  std::string errorKey() const;
-  void saveScreenshot(int width, int height, const std::string& file);
-  // The picture (to `out`) and the --report, --truth-out, --error-out asked for, all or none;
-  // false (and one line on stderr) when any cannot be written.
-  bool writeOutputs(const std::string& out, const Image& image);
   void renderInto(GLuint target, int width, int height, const std::string& mode, bool timed,
                   bool withPanel);
   void drawPanel(Frame& frame);
@@ -151,7 +136,6 @@ class Runner final : public LessonHost {
   // The eye's matrices from camera.*: one definition for the lesson and the truth's pass.
   glm::mat4 cameraView() const;
   glm::mat4 cameraProjection(int width, int height) const;
-  int runHeadless();
 
   std::string name_;
   bool input_moving_ = false;
@@ -175,11 +159,13 @@ class Runner final : public LessonHost {
   BaselineFrames baseline_{*this};
   friend class TexelPass;
   TexelPass texels_{*this};
-  TruthMeasure truth_;
+  friend class ErrorMeasure;
+  ErrorMeasure errors_{*this};
+  friend class HeadlessRun;
+  HeadlessRun headless_{*this};
   int runHeadlessOrWindow();
   friend class ExerciseRun;
   ExerciseRun exercise_{*this};
-  TruthInputs gatherTruthInputs();  // render thread: what traceTruth needs of the GPU
   friend class RunnerWindow;
   RunnerWindow window_{*this};
 };

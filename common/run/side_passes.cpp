@@ -51,7 +51,7 @@ double BaselineFrames::overhead() const {
 
 const std::vector<TexelPixel>* TexelPass::measure() {
   Runner& r = r_;
-  std::string key = r.errorKey();
+  std::string key = r.errors().key();
   if (key != key_) {
     const int w = r.options_.width, h = r.options_.height;
     r.gpu_->ensureTargets(w, h);
@@ -75,7 +75,7 @@ const std::vector<TexelPixel>* TexelPass::measure() {
 }
 
 bool TexelPass::current() const {
-  return key_ == r_.errorKey();
+  return key_ == r_.errors_.key();
 }
 
 void TexelPass::draw(const Frame& frame, bool heatmap) const {

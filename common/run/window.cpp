@@ -186,8 +186,8 @@ bool RunnerWindow::frame() {
       // The truth is re-measured once the sliders rest. Its rays (a few hundred ms) are traced
       // on a worker thread while frames go on; only the read-back of what it needs (the
       // visibility, shaded and geometry passes) takes the render thread.
-      r_.pollErrorMeasure();
-      const std::string key = r_.errorKey();
+      r_.errors_.poll();
+      const std::string key = r_.errors_.key();
       const auto now = std::chrono::steady_clock::now();
       // Input moves while the key changes (the first frame's key is no move) or a widget is
       // held; a lesson may draw a cheaper picture then (Frame::input_moving).
@@ -198,9 +198,9 @@ bool RunnerWindow::frame() {
       const bool resting = now - changed_at > std::chrono::milliseconds(300);
       r_.setInputMoving(ImGui::IsAnyItemActive() ||
                         (moved_at && now - *moved_at <= std::chrono::milliseconds(300)));
-      if (r_.options_.truth && resting && key != r_.truth_.key() && !r_.truth_.running() &&
-          !ImGui::IsAnyItemActive()) {
-        r_.beginErrorMeasure();
+      if (r_.options_.truth && resting && key != r_.errors_.truth().key() &&
+          !r_.errors_.truth().running() && !ImGui::IsAnyItemActive()) {
+        r_.errors_.begin();
       }
       // The panel's "shadow: N x the frame without it": one frame in 32 is rendered again,
       // off-screen, with shadow.off.
@@ -213,7 +213,7 @@ bool RunnerWindow::frame() {
       GlErrorLog::poll();
       if (screenshot_requested) {
         screenshot_requested = false;
-        r_.saveScreenshot(window_w, h, {});
+        r_.headless_.saveScreenshot(window_w, h, {});
       }
       if (frames_left > 0 && --frames_left == 0) {
         // The same outputs as a headless run: the window as shown (the picture, and the
@@ -224,7 +224,7 @@ bool RunnerWindow::frame() {
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
         glReadPixels(0, 0, window_w, h, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
         if (r_.options_.truthAsked()) r_.measureError();
-        outputs_failed = !r_.writeOutputs(r_.options_.out, image);
+        outputs_failed = !r_.headless_.writeOutputs(r_.options_.out, image);
       }
     }
     glfwSwapBuffers(window);

@@ -47,6 +47,10 @@ class RunnerWindow {
   // The panel in a window is drawn anew only when it may have changed, into a texture laid
   // over the other frames (panel.cpp).
   bool panelDue(int width, int height);
+  // The panel's frame line: the median the report gives ("measuring..." before any frame).
+  std::string costSummary() const;
+  // The last frame's work counters, one line: "name N, ..., name unavailable on gles30".
+  std::string counterSummary() const;
   void drawPanelTexture(int width, int height);
   void laySavedPanel(const Frame& frame);
 
