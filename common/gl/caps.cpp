@@ -95,6 +95,7 @@ bool loadGl(GLADloadfunc load) {
   c.depth_readback = c.float_color_targets = c.texture_swizzle = true;
   c.depth_clamp = GLAD_GL_VERSION_3_2 != 0;
   c.texture_gather = GLAD_GL_VERSION_4_0 != 0;
+  c.seamless_cube_switch = GLAD_GL_VERSION_3_2 != 0;
   c.pipeline_statistics = GLAD_GL_ARB_pipeline_statistics_query != 0;
   c.debug_output = GLAD_GL_KHR_debug != 0;
 #if SHADOWS_GL_VERSION >= 430

@@ -66,6 +66,31 @@ Texture Texture::depth(int width, int height, int bits) {
   return t;
 }
 
+void setSeamlessCubeFiltering([[maybe_unused]] bool on) {
+#if !SHADOWS_GLES
+  if (!caps().seamless_cube_switch) return;
+  on ? glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS) : glDisable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+#endif
+}
+
+Texture Texture::depthCube(int size, int bits) {
+  Texture t = create(GL_TEXTURE_CUBE_MAP, size, size);
+  const GLenum internal = bits == 16   ? GL_DEPTH_COMPONENT16
+                          : bits == 24 ? GL_DEPTH_COMPONENT24
+                                       : GL_DEPTH_COMPONENT32F;
+  const GLenum type = bits == 32 ? GL_FLOAT : GL_UNSIGNED_INT;
+  for (GLenum face = 0; face < 6; ++face) {
+    glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, static_cast<GLint>(internal), size, size,
+                 0, GL_DEPTH_COMPONENT, type, nullptr);
+  }
+  // Every direction lands on some face: no border, and the edge texels are the face's own.
+  t.setWrap(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, 0);
+  t.setFilter(GL_NEAREST);
+  return t;
+}
+
 namespace {
 // Storage for one level of a 2D texture: immutable where the API has it (GL 4.2, ES 3.0), else
 // glTexImage2D with the format and type that go with the internal format (GL 4.1).
@@ -316,10 +341,9 @@ void PassState::apply() const {
 }
 
 void Texture::setCompare(bool compare) const {
-  glBindTexture(GL_TEXTURE_2D, name_.id());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE,
-                  compare ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glBindTexture(target_, name_.id());
+  glTexParameteri(target_, GL_TEXTURE_COMPARE_MODE, compare ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
+  glTexParameteri(target_, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
 }
 
 Framebuffer::Framebuffer() {
@@ -328,9 +352,12 @@ Framebuffer::Framebuffer() {
   name_ = GlName<deleteFramebuffer>(id);
 }
 
-void Framebuffer::attachDepth(const Texture& depth) {
+void Framebuffer::attachDepth(const Texture& depth, int cubeFace) {
   glBindFramebuffer(GL_FRAMEBUFFER, name_.id());
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth.id(), 0);
+  const GLenum target = cubeFace >= 0
+                            ? GL_TEXTURE_CUBE_MAP_POSITIVE_X + static_cast<GLenum>(cubeFace)
+                            : GL_TEXTURE_2D;
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, target, depth.id(), 0);
   if (draw_buffers_.empty()) {
     // Depth only: no colour is written or read.
     const GLenum none = GL_NONE;

@@ -64,6 +64,9 @@ class Texture {
  public:
   // A depth texture for a shadow map: bits = 16, 24 or 32 (32 = float).
   static Texture depth(int width, int height, int bits);
+  // A cube map of depth, six size x size faces (lesson 11's omni light), bits as depth(); its
+  // faces are framebuffer attachments one at a time (Framebuffer::attachDepth's face).
+  static Texture depthCube(int size, int bits);
   // Depth + stencil for the runner's own colour targets (GL_DEPTH24_STENCIL8).
   static Texture depthStencil(int width, int height);
   // A colour texture: GL_RGBA8, GL_RGBA32F, GL_R8, ...; `mipmapped`: with every level down to
@@ -111,6 +114,11 @@ class Texture {
   std::optional<glm::vec4> border_;
   int width_ = 0, height_ = 0, levels_ = 1;
 };
+
+// Linear lookups in cube maps blend across face edges (GL_TEXTURE_CUBE_MAP_SEAMLESS) or not;
+// where the switch is missing (Caps::seamless_cube_switch: ES 3.0, WebGL 2 always blend
+// across) nothing changes.
+void setSeamlessCubeFiltering(bool on);
 
 // A buffer object (vertex data, a uniform block, a pixel-pack buffer).
 class Buffer {
@@ -199,7 +207,8 @@ class Sampler {
 class Framebuffer {
  public:
   Framebuffer();
-  void attachDepth(const Texture& depth);
+  // `cubeFace` 0..5 (+x, -x, +y, -y, +z, -z): that face of a cube map.
+  void attachDepth(const Texture& depth, int cubeFace = -1);
   void attachDepthStencil(const Texture& depthStencil);
   void attachColor(const Texture& color, int index = 0);
   void check() const;  // throws GlFailure when incomplete

@@ -84,11 +84,12 @@ std::string versionLines(const std::string& fileVersion, const Caps& c) {
   // A file states the desktop GLSL it was written for ("#version 430 core"); what it needs
   // beyond 4.1 it asks for under HAS_* (Caps::shaderDefines).
   if (c.es) {
-    // No default precision for floats in ES fragment shaders, nor for sampler2DShadow:
+    // No default precision for floats in ES fragment shaders, nor for the shadow samplers:
     // everything highp, as desktop GLSL computes it.
     return "#version 300 es\n"
            "precision highp float;\nprecision highp int;\n"
-           "precision highp sampler2D;\nprecision highp sampler2DShadow;\n";
+           "precision highp sampler2D;\nprecision highp sampler2DShadow;\n"
+           "precision highp samplerCube;\nprecision highp samplerCubeShadow;\n";
   }
   int number = 330;
   std::sscanf(fileVersion.c_str(), " #version %d", &number);
