@@ -1,7 +1,7 @@
 // The scene presets: the shared ones every map lesson offers (torus_pyramid, grazing, dueling,
 // cubes) and the ones a lesson makes its own case with (room for 08, eye_in_shadow and fence
-// for 09, strategy and receding for 10, stacked for 13, contact and overlap for 14). The
-// meshes and the scene's queries are in scene.cpp.
+// for 09, strategy and receding for 10, bulb for 11, stacked for 13, contact and overlap for 14).
+// The meshes and the scene's queries are in scene.cpp.
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -76,6 +76,57 @@ Scene room() {
        {0.85f, 0.45f, 0.25f}});
   s.light = {false, {3.6f, 5.6f, -2.4f}, {-0.8f, 0.0f, 0.6f}, 42.0f, 10.0f, 0.5f, 12.0f};
   s.camera = {{-1.2f, 2.6f, 8.8f}, {0.2f, 1.8f, -1.0f}, 50.0f, 0.1f, 100.0f};
+  return s;
+}
+
+// Lesson 11's bare bulb in a room: a point light with casters on every side of it, so
+// every face of its cube map but the one looking up (no ceiling, nothing above) holds a
+// shadow somewhere: a table under it, a pillar to its left, a ball to its right, a ring
+// behind it and a crate in front, shadowing the floor and three walls.
+Scene bulb() {
+  Scene s;
+  const glm::mat4 one(1.0f);
+  const glm::vec3 plaster{0.72f, 0.7f, 0.66f};
+  s.objects.push_back(floorObject(6.0f, 0.0f));
+  s.objects.push_back({"back_wall", makePlane(6.0f, 3.0f),
+                       translate({0, 3, -6}) * glm::rotate(one, glm::radians(90.0f), {1, 0, 0}),
+                       plaster, false, true});
+  s.objects.push_back({"left_wall", makePlane(3.0f, 6.0f),
+                       translate({-6, 3, 0}) * glm::rotate(one, glm::radians(-90.0f), {0, 0, 1}),
+                       plaster, false, true});
+  s.objects.push_back({"right_wall", makePlane(3.0f, 6.0f),
+                       translate({6, 3, 0}) * glm::rotate(one, glm::radians(90.0f), {0, 0, 1}),
+                       plaster, false, true});
+  s.objects.push_back({"table_top",
+                       makeBox({0.9f, 0.04f, 0.6f}),
+                       translate({0.2f, 1.0f, 0.1f}),
+                       {0.62f, 0.5f, 0.38f}});
+  for (const glm::vec2 leg : {glm::vec2(-0.6f, -0.4f), glm::vec2(1.0f, -0.4f),
+                              glm::vec2(-0.6f, 0.6f), glm::vec2(1.0f, 0.6f)}) {
+    s.objects.push_back({"table_leg",
+                         makeBox({0.05f, 0.48f, 0.05f}),
+                         translate({leg.x, 0.48f, leg.y}),
+                         {0.45f, 0.35f, 0.25f}});
+  }
+  s.objects.push_back({"pillar",
+                       makeBox({0.3f, 1.6f, 0.3f}),
+                       translate({-2.6f, 1.6f, -0.8f}),
+                       {0.55f, 0.45f, 0.4f}});
+  s.objects.push_back(
+      {"ball", makeSphere(0.5f, 48, 24), translate({2.4f, 2.3f, 0.6f}), {0.5f, 0.8f, 0.4f}});
+  s.objects.push_back(
+      {"ring",
+       makeTorus(0.6f, 0.16f, 96, 48),
+       translate({-0.4f, 2.5f, -2.4f}) * glm::rotate(one, glm::radians(75.0f), {1, 0, 0}),
+       {0.85f, 0.45f, 0.25f}});
+  s.objects.push_back(
+      {"crate",
+       makeBox({0.35f, 0.35f, 0.35f}),
+       translate({1.1f, 0.35f, 2.2f}) * glm::rotate(one, glm::radians(25.0f), {0, 1, 0}),
+       {0.7f, 0.35f, 0.3f}});
+  // An omni light has no target or angle: these only matter to lessons that aim it.
+  s.light = {false, {0.0f, 2.3f, 0.2f}, {0.0f, 0.0f, 0.0f}, 90.0f, 10.0f, 0.1f, 20.0f};
+  s.camera = {{0.8f, 4.6f, 9.5f}, {0.0f, 1.3f, -0.8f}, 55.0f, 0.1f, 100.0f};
   return s;
 }
 
@@ -271,6 +322,8 @@ Scene makeScene(const std::string& preset) {
                          {0.7f, 0.35f, 0.3f}});
     s.light = {false, {-3.0f, 6.5f, 2.0f}, {0.3f, 0.0f, -0.3f}, 60.0f, 10.0f, 2.0f, 16.0f};
     s.camera = {{4.6f, 2.4f, 2.6f}, {1.9f, 0.1f, -0.5f}, 45.0f, 0.1f, 100.0f};
+  } else if (preset == "bulb") {
+    s = bulb();
   } else if (preset == "room") {
     s = room();
   } else if (preset == "strategy") {

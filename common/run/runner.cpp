@@ -120,9 +120,12 @@ void Runner::loadScene() {
   preset_models_.clear();
   for (const auto& object : scene_.objects) preset_models_.push_back(object.model);
   const LightSetup& l = scene_.light;
-  params_.setDefaultChoice(params_.at("light.type"), l.directional ? "directional" : "spot");
+  // An omni light (11) has neither a type nor a target.
+  if (Param* type = params_.find("light.type")) {
+    params_.setDefaultChoice(*type, l.directional ? "directional" : "spot");
+  }
   params_.setDefaultVec3(params_.at("light.pos"), l.position);
-  params_.setDefaultVec3(params_.at("light.target"), l.target);
+  if (Param* target = params_.find("light.target")) params_.setDefaultVec3(*target, l.target);
   const std::pair<const char*, float> frustum[] = {{"light.fov", l.fov},
                                                    {"light.extent", l.extent},
                                                    {"light.near", l.near},
@@ -168,9 +171,11 @@ std::string Runner::checkConsistency() const {
 Light Runner::currentLight() const {
   const Params& p = params_;
   Light l;
-  l.directional = p.at("light.type").is("directional");
+  const Param* type = p.find("light.type");
+  const Param* target = p.find("light.target");
+  l.directional = type != nullptr && type->is("directional");
   l.position = p.at("light.pos").v();
-  l.target = p.at("light.target").v();
+  l.target = target != nullptr ? target->v() : scene_.light.target;
   const glm::vec3 d = l.target - l.position;
   l.direction = glm::dot(d, d) > 1e-12f ? glm::normalize(d) : glm::vec3(0, -1, 0);
   // A lesson that does not offer a frustum slider gets the scene preset's value.
