@@ -1,0 +1,314 @@
+// Lesson 11: an omni-directional light, six view frusta in a cube map (seed 000, "Not without
+// its problems": "Shadows are limited to view frustums - could use six view frustums for
+// omni-directional light"; seed 003: shadow volumes handle "Omnidirectional lights (unlike
+// shadow maps!)").
+//
+//   Pass 1, six times: the casters through one 90° frustum per face (+x, -x, +y, -y, +z, -z)
+//           into that face of a depth cube map. Stored as the distance to the light (a linear
+//           gl_FragDepth) or as each face's own hardware depth.
+//   Pass 2: from the eye. The direction from the light to the fragment picks the face and the
+//           texel (samplerCubeShadow); the reference is the fragment's value in the same store.
+//
+// Work the scene does not need is skipped and counted: a face holding no caster, or one the
+// eye's frustum never reaches, is not rendered; casters outside a face's frustum are culled;
+// the cube is kept while nothing moved.
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+
+#include "core/json.hpp"
+#include "cube_math.hpp"
+#include "lesson/lesson.hpp"
+
+namespace shadows {
+
+namespace {
+const std::vector<std::string> kStores = {"distance", "depth"};
+enum class Store { Distance, Depth };
+}  // namespace
+
+class OmniCube final : public Lesson {
+ public:
+  std::string title() const override { return "Omni light: six frusta in a cube map"; }
+  std::string seeds() const override {
+    return "seed 000: Not without its problems (six view frustums for omni-directional light); "
+           "seed 003: Shadow volumes, advantages (omnidirectional lights)";
+  }
+  std::vector<std::string> debugViews() const override {
+    return {"cube_cross", "face", "face_texels", "distance"};
+  }
+  std::vector<std::string> scenes() const override { return {"bulb", "torus_pyramid", "dueling"}; }
+  // An omni light points nowhere and has no frustum of its own: each face's is fixed at 90°.
+  std::vector<std::string> unusedSharedParams() const override {
+    return {"light.type", "light.target", "light.fov", "light.extent"};
+  }
+
+  void declare(Params& p) override {
+    constexpr auto kMap = kDirtyShadowMap | kDirtyResources;
+    size_ = p.addInt("cube.size", 512, 16, 2048, "texels along each face's side", kMap).logScale();
+    store_ = p.addChoice("cube.store", kStores, "distance",
+                         "distance: |p - light| / far, written linear; depth: each face's own "
+                         "hardware depth",
+                         kDirtyShadowMap);
+    bits_ = p.addChoice("cube.bits", {"16", "24", "32"}, "24", "bits of the stored depth", kMap);
+    filter_ = p.addChoice("cube.filter", {"nearest", "linear"}, "nearest",
+                          "linear: the hardware's 2x2 compare, blended (bilinear PCF)");
+    seamless_ = p.addBool("cube.seamless", true,
+                          "linear filtering reads across face edges (always, on ES and WebGL)");
+    skip_ = p.addBool("cube.skip", true,
+                      "skip faces with no caster or out of the eye's sight, and casters outside "
+                      "a face's frustum",
+                      kDirtyShadowMap);
+    bias_ = p.addFloat("bias.world", 0.05f, 0.0f, 0.5f,
+                       "constant bias, world units along the ray (distance) or the axis (depth)");
+    normal_ = p.addFloat("bias.normal", 0.25f, 0.0f, 4.0f,
+                         "normal offset, in texels of the face at the fragment's distance");
+    dimming_ = p.addFloat("dimming", 0.4f, 0.0f, 1.0f,
+                          "light left in shadow: dimming + (1-dimming)*shade");
+    {
+      const Params::SharedScope shared(p);
+      cache_ =
+          p.addBool("shadow.cache", true,
+                    "re-render the cube only when the light or a caster changed", kDirtyShadowMap);
+      off_ = p.addBool("shadow.off", false,
+                       "baseline: the same frame with no shadow work (no cube, no lookup)",
+                       kDirtyShadowMap);
+    }
+  }
+
+  void init() override {
+    depth_programs_ = ProgramVariants(lessonFile(LESSON_DIR, "cube_depth.vert"),
+                                      lessonFile(LESSON_DIR, "cube_depth.frag"));
+    eye_programs_ = ProgramVariants(commonShaderDir() / "shadow_coord.vert",
+                                    lessonFile(LESSON_DIR, "scene.frag"));
+    cross_programs_ = ProgramVariants(commonShaderDir() / "fullscreen.vert",
+                                      lessonFile(LESSON_DIR, "cross.frag"));
+    compare_nearest_ = Sampler::depth(/*compare=*/true, GL_NEAREST);
+    compare_linear_ = Sampler::depth(/*compare=*/true, GL_LINEAR);
+    raw_ = Sampler::depth(/*compare=*/false, GL_NEAREST);
+  }
+
+  void render(Frame& f) override {
+    light_ = f.light.position;
+    near_ = f.light.near;
+    far_ = f.light.far;
+    if (off_()) {
+      for (const char* name :
+           {"shadow_map_renders", "cube_faces_rendered", "cube_faces_empty", "cube_faces_unseen"}) {
+        f.measure.count(name, 0);
+      }
+    } else {
+      renderCube(f);
+    }
+
+    auto timing = f.measure.pass("eye", /*countPassed=*/true);
+    f.clearTarget(f.mode == "cube_cross" ? glm::vec3(0.08f) : Frame::kSky);
+    if (f.mode == "cube_cross") return drawCross(f);
+    cube_.bind(0);
+    (filter_.name() == "linear" ? compare_linear_ : compare_nearest_).bind(0);
+    cube_.bind(1);
+    raw_.bind(1);
+    // Desktop GL filters each face on its own unless told; ES and WebGL always across.
+    setSeamlessCubeFiltering(seamless_());
+    const Program& e =
+        eye_programs_.get({store_.defines(), f.viewDefines(), define("SHADOW_OFF", off_())});
+    e.set("uViewProjection", f.projection * f.view);
+    e.set("uShadowMatrix", glm::mat4(1.0f));
+    e.set("uCube", 0);
+    e.set("uCubeRaw", 1);
+    setCubeUniforms(e);
+    e.set("uBiasWorld", bias_());
+    e.set("uBiasNormal", normal_());
+    f.setLightingUniforms(e, dimming_());
+    f.drawObjects(e, Objects::All);
+    setSeamlessCubeFiltering(false);  // the GL's default, for every other pass
+    Sampler::unbind(0);
+    Sampler::unbind(1);
+  }
+
+  // Within two texels of a face's edge, from the light: where filtering reads across a seam.
+  std::vector<ErrorRegion> errorRegions() const override {
+    const glm::vec3 light = light_;
+    const int size = size_();
+    return {{"seams", [light, size](glm::vec4 p) {
+               return cube::seamDistanceTexels(glm::vec3(p) - light, size) < 2.0f;
+             }}};
+  }
+
+  void report(JsonWriter& json) const override {
+    json.value("cube_passes", "six");  // one pass a face; a layered pass is not built yet
+    json.value("cube_store", store_.name());
+    json.value("cube_seamless_used",
+               filter_.name() == "linear" && (seamless_() || !caps().seamless_cube_switch));
+    // What the cube holds, whichever frame rendered it: a cached frame renders no face.
+    json.value("cube_faces_in_use",
+               static_cast<long long>(std::count(drawn_.begin(), drawn_.end(), true)));
+    json.value("cube_bytes", 6LL * cube_size_ * cube_size_ * (cube_bits_ / 8));
+    json.beginObject("cube_faces");
+    for (int i = 0; i < 6; ++i) json.value(cube::kFaceNames[static_cast<size_t>(i)], faceState(i));
+    json.endObject();
+  }
+
+  void panel(Frame& f) override {
+    const auto& counts = f.measure.lastFrameCounts();
+    const auto count = [&](const char* name) {
+      const auto it = counts.find(name);
+      return it == counts.end() ? 0LL : it->second;
+    };
+    std::string faces;
+    for (int i = 0; i < 6; ++i) {
+      faces += std::string(i ? ", " : "") + cube::kFaceNames[static_cast<size_t>(i)] + " " +
+               faceState(i);
+    }
+    ImGui::TextWrapped("cube faces: %s", faces.c_str());
+    ImGui::TextWrapped("this frame rendered %lld face(s); the cube is kept while nothing moves",
+                       count("cube_faces_rendered"));
+    if (filter_.name() == "linear" && !caps().seamless_cube_switch) {
+      ImGui::TextWrapped("cube.seamless: always on with %s", caps().flavour.c_str());
+    }
+  }
+
+  // docs/EXERCISES.md has the intended solutions.
+  std::vector<Exercise> exercises() const override {
+    using B = Figure::Bound;
+    return {{.title = "A small cube that is still right",
+             .goal = "With 64-texel faces the bulb's shadows are blocky: 0.29 % false shadow and "
+                     "0.43 % false lit. Bring each to 0.2 % or less with a cube of at most "
+                     "300000 bytes (six faces of size x size texels, bits / 8 bytes each).",
+             .setup = {"cube.size=64"},
+             .allowed = {"cube.size", "cube.bits", "cube.filter", "bias.world", "bias.normal"},
+             .figures = {{"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.2},
+                         {"/error/false_lit_pct", "false lit %", B::AtMost, 0.2},
+                         {"/cube_bytes", "cube bytes", B::AtMost, 300000}},
+             .hint = "The texels are where the bytes go, but the hardware can also blend the "
+                     "four compares around each lookup."},
+            {.title = "Dueling frusta around a bulb",
+             .goal = "Light and eye face each other: every face the eye looks into is magnified. "
+                     "At 512 texels a face the preset has 0.33 % false shadow and 0.48 % false "
+                     "lit. Bring each to 0.25 % or less without a bigger cube.",
+             .setup = {"scene=dueling"},
+             .allowed = {"cube.filter", "bias.world", "bias.normal"},
+             .figures = {{"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.25},
+                         {"/error/false_lit_pct", "false lit %", B::AtMost, 0.25}},
+             .hint = "A normal offset in texels grows with the texels; where texels are huge "
+                     "near the eye, a bias in world units may be the better measure."}};
+  }
+
+ private:
+  // The cube's storage, and which faces hold their casters for the current light.
+  void renderCube(Frame& f) {
+    const int bits = std::stoi(bits_.name());
+    const bool recreated = size_() != cube_size_ || bits != cube_bits_;
+    if (recreated) {
+      cube_ = Texture::depthCube(size_(), bits);
+      cube_size_ = size_(), cube_bits_ = bits;
+      for (int i = 0; i < 6; ++i) {
+        framebuffers_[static_cast<size_t>(i)] = std::make_unique<Framebuffer>();
+        framebuffers_[static_cast<size_t>(i)]->attachDepth(cube_, i);
+        framebuffers_[static_cast<size_t>(i)]->check();
+      }
+    }
+    const bool stale = f.params.consume(kDirtyShadowMap) || !cache_() || recreated;
+    if (stale) {
+      // Every face starts empty (far: lit); a face is drawn once something needs it.
+      PassState{}.apply();  // depth writes on, whatever the last pass left
+      for (auto& fb : framebuffers_) {
+        fb->bind();
+        glViewport(0, 0, cube_size_, cube_size_);
+        glClearDepthf(1.0f);
+        glClear(GL_DEPTH_BUFFER_BIT);
+      }
+      drawn_.fill(false);
+    }
+    const glm::mat4 projection = cube::faceProjection(near_, far_);
+    const glm::mat4 eye = f.projection * f.view;
+    int rendered = 0, empty = 0, unseen = 0;
+    for (int i = 0; i < 6; ++i) {
+      const glm::mat4 face = projection * cube::faceView(light_, i);
+      has_casters_[static_cast<size_t>(i)] = !skip_() || anyCasterIn(f, face);
+      seen_[static_cast<size_t>(i)] = !skip_() || !cube::frustaDisjoint(face, eye);
+      if (!has_casters_[static_cast<size_t>(i)])
+        ++empty;
+      else if (!seen_[static_cast<size_t>(i)])
+        ++unseen;
+      if (drawn_[static_cast<size_t>(i)] || !has_casters_[static_cast<size_t>(i)] ||
+          !seen_[static_cast<size_t>(i)]) {
+        continue;
+      }
+      renderFace(f, i, face);
+      drawn_[static_cast<size_t>(i)] = true;
+      ++rendered;
+    }
+    f.measure.count("shadow_map_renders", rendered > 0 ? 1 : 0);
+    f.measure.count("cube_faces_rendered", rendered);
+    f.measure.count("cube_faces_empty", empty);
+    f.measure.count("cube_faces_unseen", unseen);
+  }
+
+  void renderFace(Frame& f, int i, const glm::mat4& face) {
+    auto timing = f.measure.pass("shadow");
+    framebuffers_[static_cast<size_t>(i)]->bind();
+    glViewport(0, 0, cube_size_, cube_size_);
+    const Program& d = depth_programs_.get({store_.defines()});
+    d.set("uLightViewProjection", face);
+    d.set("uLightPos", light_);
+    d.set("uCubeFar", far_);
+    f.drawObjects(d, Objects::Casters, skip_() ? &face : nullptr);
+  }
+
+  bool anyCasterIn(const Frame& f, const glm::mat4& face) const {
+    const Light& l = f.light;
+    for (const SceneObject& o : f.scene.objects) {
+      if (!o.castsFrom(l.position, false, l.direction)) continue;
+      const Bounds b = o.worldBounds();
+      if (!sphereOutsideFrustum(face, b.center(), b.radius())) return true;
+    }
+    return false;
+  }
+
+  void drawCross(Frame& f) {
+    if (off_()) return;
+    cube_.bind(1);
+    raw_.bind(1);
+    const Program& c = cross_programs_.get({store_.defines()});
+    c.set("uCubeRaw", 1);
+    setCubeUniforms(c);
+    c.set("uAspect", static_cast<float>(f.width) / static_cast<float>(std::max(f.height, 1)));
+    int drawn = 0;
+    for (int i = 0; i < 6; ++i) drawn |= drawn_[static_cast<size_t>(i)] ? 1 << i : 0;
+    c.set("uFacesRendered", drawn);
+    f.drawFullscreen(c);
+    Sampler::unbind(1);
+  }
+
+  void setCubeUniforms(const Program& p) const {
+    p.set("uLightPos", light_);
+    p.set("uCubeNear", near_);
+    p.set("uCubeFar", far_);
+    p.set("uCubeSize", static_cast<float>(cube_size_));
+  }
+
+  std::string faceState(int i) const {
+    const auto k = static_cast<size_t>(i);
+    return drawn_[k] ? "rendered" : !has_casters_[k] ? "empty" : !seen_[k] ? "unseen" : "off";
+  }
+
+  ChoiceParam<Store> store_;
+  ChoiceParam<> bits_, filter_;
+  IntParam size_;
+  BoolParam seamless_, skip_, cache_, off_;
+  FloatParam bias_, normal_, dimming_;
+  ProgramVariants depth_programs_, eye_programs_, cross_programs_;
+  Sampler compare_nearest_, compare_linear_, raw_;
+  Texture cube_;
+  std::array<std::unique_ptr<Framebuffer>, 6> framebuffers_;
+  int cube_size_ = 0, cube_bits_ = 0;
+  std::array<bool, 6> drawn_{}, has_casters_{}, seen_{};
+  glm::vec3 light_{0.0f};
+  float near_ = 0.1f, far_ = 20.0f;
+};
+
+SHADOWS_LESSON(OmniCube);
+
+}  // namespace shadows

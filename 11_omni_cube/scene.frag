@@ -1,0 +1,88 @@
+#version 330 core
+// Pass 2 from the eye: the direction from the light to the fragment picks the cube face and
+// the texel (the hardware does it: samplerCubeShadow), and the reference it is compared with
+// is the fragment's own value in the map's store, less the bias:
+//   distance: (|p - light| - bias) / far                 against the distance written
+//   depth:    majorDepth(max(|v.x|, |v.y|, |v.z|) - bias)  against the face's hardware depth
+// with p moved along its normal by bias.normal texels first (a texel is 2 z / size wide).
+#include "lighting.glsl"
+#include "cube_lookup.glsl"
+
+in vec3 vWorld;
+in vec3 vNormal;
+in vec4 vShadowCoord;  // unused: shadow_coord.vert's 2D lookup, not a cube's
+uniform samplerCubeShadow uCube;  // compare mode on (a sampler object)
+uniform samplerCube uCubeRaw;     // the same texture read raw, for the views
+uniform float uBiasWorld;         // world units, along the ray (distance) or the axis (depth)
+uniform float uBiasNormal;        // texels, along the normal
+uniform vec3 uColor;
+out vec4 outColor;
+
+vec3 offsetPosition(vec3 n) {
+  vec3 v = vWorld - uLightPos;
+  // Toward the light's side of the surface, by a texel's size here.
+  float side = dot(n, v) > 0.0 ? -1.0 : 1.0;
+  return vWorld + side * n * uBiasNormal * texelWorldSize(majorDistance(v));
+}
+
+float reference(vec3 v) {
+#if CUBE_STORE == CUBE_STORE_DISTANCE
+  return (length(v) - uBiasWorld) / uCubeFar;
+#else
+  return majorDepth(max(majorDistance(v) - uBiasWorld, uCubeNear));
+#endif
+}
+
+float shadowTerm(vec3 n) {
+  vec3 v = offsetPosition(n) - uLightPos;
+  if (majorDistance(v) >= uCubeFar) return 1.0;  // beyond every face's far plane: unshadowed
+  return texture(uCube, vec4(v, reference(v)));
+}
+
+// Six colours, one a face, for the face view.
+vec3 faceColor(int face) {
+  vec3 c[6] = vec3[6](vec3(0.9, 0.3, 0.3), vec3(0.45, 0.12, 0.12), vec3(0.3, 0.85, 0.3),
+                      vec3(0.12, 0.4, 0.12), vec3(0.3, 0.45, 0.95), vec3(0.12, 0.18, 0.5));
+  return c[face];
+}
+
+void main() {
+  vec3 n = normalize(vNormal);
+#if SHADOW_OFF
+  float shade = 1.0;  // shadow.off: the baseline, no lookup at all
+#else
+  float shade = shadowTerm(n);
+#endif
+#if VIEW == VIEW_SHADED
+  outColor = vec4(shadeSurface(uColor, vWorld, n, shade), 1.0);
+#elif VIEW == VIEW_VISIBILITY
+  outColor = vec4(vec3(shade), 1.0);
+#elif VIEW == VIEW_FACE
+  // Which face each pixel read, dimmed where it is in shadow.
+  vec3 v = vWorld - uLightPos;
+  outColor = vec4(faceColor(majorFace(v)) * (0.35 + 0.65 * shade), 1.0);
+#elif VIEW == VIEW_FACE_TEXELS
+  // Map texels per pixel on the face read: how far one pixel step moves in the face's texels.
+  vec3 v = vWorld - uLightPos;
+  vec3 a = abs(v);
+  int f = majorFace(v);
+  vec2 st = f < 2 ? v.yz / a.x : (f < 4 ? v.xz / a.y : v.xy / a.z);
+  vec2 texels = 0.5 * uCubeSize * st;
+  float per_pixel = max(length(dFdx(texels)), length(dFdy(texels)));
+  // Green near one texel a pixel, red where a texel covers many pixels (blocky), blue where
+  // many texels fall on one pixel (wasted), on a log scale.
+  float l = clamp(log2(max(per_pixel, 1e-4)) / 4.0, -1.0, 1.0);
+  vec3 heat = l < 0.0 ? mix(vec3(0.2, 0.8, 0.3), vec3(0.9, 0.2, 0.15), -l)
+                      : mix(vec3(0.2, 0.8, 0.3), vec3(0.2, 0.35, 0.95), l);
+  outColor = vec4(heat * (0.45 + 0.55 * shade), 1.0);
+#else  // VIEW_DISTANCE: the stored value and the fragment's own, as Kilgard shows a 2D map's
+  vec3 v = vWorld - uLightPos;
+  float stored = texture(uCubeRaw, v).r;
+#if CUBE_STORE == CUBE_STORE_DEPTH
+  // Back from hyperbolic depth to the distance along the axis, over far.
+  float z = 2.0 * stored - 1.0;
+  stored = 2.0 * uCubeNear * uCubeFar / (uCubeFar + uCubeNear - z * (uCubeFar - uCubeNear)) / uCubeFar;
+#endif
+  outColor = vec4(vec3(stored), 1.0);
+#endif
+}

@@ -1,0 +1,256 @@
+// Lesson 11 end to end, headless: an omni light's cube map against the point light's truth.
+// The cube's arithmetic (cube_math.hpp, which the shaders mirror); goldens of the shaded,
+// cross and face views; the error bound at the defaults and for lights away from the preset's;
+// both stores drawing the same shadows; faces and casters skipped, counted, and never changing
+// the picture; the cube kept while nothing moves and rendered again when anything it holds
+// does; seamless filtering along the seams.
+#include "harness.hpp"
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "../11_omni_cube/cube_math.hpp"
+
+namespace shadows {
+namespace {
+
+using testing::counter;
+using testing::reportNumber;
+using testing::startLesson;
+
+const std::string kLesson = "11_omni_cube";
+
+TEST(CubeMath, EachFaceLooksDownItsOwnAxisAndAPointOnItLandsInTheMiddle) {
+  const glm::vec3 light(0.3f, 2.0f, -1.0f);
+  const glm::mat4 projection = cube::faceProjection(0.1f, 20.0f);
+  const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (int face = 0; face < 6; ++face) {
+    const glm::vec3 v = 3.0f * axes[face];
+    EXPECT_EQ(cube::majorFace(v), face);
+    const glm::vec4 clip = projection * cube::faceView(light, face) * glm::vec4(light + v, 1.0f);
+    EXPECT_NEAR(clip.x / clip.w, 0.0f, 1e-5f) << face;
+    EXPECT_NEAR(clip.y / clip.w, 0.0f, 1e-5f) << face;
+    // A point just inside the face's 90° frustum, off the axis, is still inside it.
+    const glm::vec4 corner = projection * cube::faceView(light, face) *
+                             glm::vec4(light + v + 2.9f * axes[(face + 2) % 6], 1.0f);
+    EXPECT_LT(std::abs(corner.x / corner.w) + std::abs(corner.y / corner.w), 1.0f) << face;
+  }
+}
+
+TEST(CubeMath, TheMajorAxisDepthIsTheDepthTheFaceStores) {
+  const float near = 0.1f, far = 20.0f;
+  const glm::vec3 light(1.0f, 2.0f, 3.0f);
+  const glm::mat4 projection = cube::faceProjection(near, far);
+  for (const glm::vec3 v : {glm::vec3(2.0f, 0.5f, -1.0f), glm::vec3(-0.3f, 4.0f, 2.0f),
+                            glm::vec3(0.2f, -0.1f, -7.5f), glm::vec3(-9.0f, 3.0f, 8.9f)}) {
+    const int face = cube::majorFace(v);
+    const glm::vec4 clip = projection * cube::faceView(light, face) * glm::vec4(light + v, 1.0f);
+    const float window = 0.5f * clip.z / clip.w + 0.5f;
+    EXPECT_NEAR(cube::majorDepth(cube::majorDistance(v), near, far), window, 1e-6f);
+  }
+  // A texel is 2z/size wide: the face's width at z, over its texels.
+  EXPECT_FLOAT_EQ(cube::texelWorldSize(4.0f, 512), 8.0f / 512.0f);
+}
+
+TEST(CubeMath, SeamDistanceIsHalfAFaceAtItsCentreAndNothingOnAnEdge) {
+  EXPECT_FLOAT_EQ(cube::seamDistanceTexels({0.0f, 0.0f, 5.0f}, 512), 256.0f);
+  EXPECT_FLOAT_EQ(cube::seamDistanceTexels({5.0f, 0.0f, 5.0f}, 512), 0.0f);
+  EXPECT_FLOAT_EQ(cube::seamDistanceTexels({-1.0f, 0.5f, -2.0f}, 64), 16.0f);
+}
+
+TEST(CubeMath, FrustaThatShareNoPointAreToldApartAndOverlappingOnesAreNot) {
+  const glm::mat4 face = cube::faceProjection(0.1f, 20.0f) * cube::faceView({0, 2, 0}, 4);  // +z
+  const glm::mat4 looking_away =
+      glm::perspective(glm::radians(45.0f), 4.0f / 3.0f, 0.1f, 100.0f) *
+      glm::lookAt(glm::vec3(0, 2, -5), glm::vec3(0, 2, -10), glm::vec3(0, 1, 0));
+  const glm::mat4 looking_at =
+      glm::perspective(glm::radians(45.0f), 4.0f / 3.0f, 0.1f, 100.0f) *
+      glm::lookAt(glm::vec3(0, 2, -5), glm::vec3(0, 2, 0), glm::vec3(0, 1, 0));
+  EXPECT_TRUE(cube::frustaDisjoint(face, looking_away));
+  EXPECT_FALSE(cube::frustaDisjoint(face, looking_at));
+}
+
+TEST(Lesson11, SnapshotMatchesTheGolden) {
+  auto runner = startLesson(kLesson, {});
+  runner->renderFrame();
+  testing::expectMatchesGolden(runner->readImage(), kLesson);
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
+TEST(Lesson11, TheCrossAndFaceViewsMatchTheirGoldens) {
+  for (const char* view : {"cube_cross", "face"}) {
+    auto runner = startLesson(kLesson, {std::string("view=") + view});
+    runner->renderFrame();
+    testing::expectMatchesGolden(runner->readImage(), kLesson + "_" + view);
+    EXPECT_EQ(runner->glErrors(), 0) << view;
+  }
+}
+
+TEST(Lesson11, EveryViewIsCleanAndDistinct) {
+  for (const char* scene : {"bulb", "torus_pyramid"}) {
+    auto runner = startLesson(kLesson, {std::string("scene=") + scene});
+    testing::expectEveryViewCleanAndDistinct(*runner, scene);
+  }
+}
+
+TEST(Lesson11, TheBoundHoldsAtTheDefaultsForThePresetsLightAndTwoOthers) {
+  // README: 0.03/0.05, 0.05/0.09 and 0.08/0.05 % (false shadow/false lit) at 640x480. Two more
+  // lights the README names are left out of every test, to check the bound on.
+  for (const char* light : {"", "light.pos=-1.5,1.8,1", "light.pos=1.2,3,-1"}) {
+    std::vector<std::string> sets;
+    if (*light) sets.push_back(light);
+    auto runner = startLesson(kLesson, sets, 640, 480);
+    runner->renderFrame();
+    const ErrorMetrics& e = runner->measureError().metrics;
+    EXPECT_LE(e.false_shadow_pct, 0.2) << light;
+    EXPECT_LE(e.false_lit_pct, 0.2) << light;
+    EXPECT_GT(e.counted_pixels, 200000) << light;
+  }
+}
+
+TEST(Lesson11, WithoutBiasEveryLitCasterIsAcneAndTheDefaultsRemoveIt) {
+  const ErrorMetrics none = testing::measureOnce(kLesson, {"bias.world=0", "bias.normal=0"});
+  const ErrorMetrics defaults = testing::measureOnce(kLesson, {});
+  EXPECT_GT(none.false_shadow_pct, 1.0);  // README: 1.71 %
+  EXPECT_LT(defaults.false_shadow_pct, 0.2 * none.false_shadow_pct);
+}
+
+TEST(Lesson11, BothStoresDrawTheSameShadows) {
+  // The distance store and each face's hardware depth answer the same question; at 24 bits and
+  // the defaults' bias they disagree on no more than a few edge pixels.
+  auto distance = startLesson(kLesson, {"cube.store=distance"}, 320, 240);
+  const std::vector<float> a = distance->renderVisibility();
+  distance.reset();
+  auto depth = startLesson(kLesson, {"cube.store=depth"}, 320, 240);
+  const std::vector<float> b = depth->renderVisibility();
+  EXPECT_LE(testing::valuesDiffering(a, b), 20u);
+  EXPECT_EQ(testing::reportString(*depth, "/cube_store"), "depth");
+}
+
+TEST(Lesson11, FacesWithoutCastersAreSkippedAndTheCubeIsKeptWhileNothingMoves) {
+  auto runner = startLesson(kLesson, {}, 160, 120);
+  runner->renderFrame();
+  // Nothing hangs above the bulb: its +y face stays empty, the other five are rendered.
+  EXPECT_EQ(counter(*runner, "cube_faces_rendered"), 5);
+  EXPECT_EQ(counter(*runner, "cube_faces_empty"), 1);
+  EXPECT_EQ(counter(*runner, "shadow_map_renders"), 1);
+  EXPECT_EQ(testing::reportString(*runner, "/cube_faces/+y"), "empty");
+  const Image skipping = runner->readImage();
+  runner->renderFrame();
+  EXPECT_EQ(counter(*runner, "cube_faces_rendered"), 0);
+  EXPECT_EQ(counter(*runner, "shadow_map_renders"), 0);
+  EXPECT_EQ(reportNumber(*runner, "/cube_faces_in_use"), 5);
+  // All six, no culling: the same picture, byte for byte.
+  ASSERT_EQ(runner->params().set("cube.skip", "false"), "");
+  runner->renderFrame();
+  EXPECT_EQ(counter(*runner, "cube_faces_rendered"), 6);
+  EXPECT_EQ(testing::pixelsDiffering(skipping, runner->readImage(), 0), 0u);
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
+TEST(Lesson11, CastersOutsideAFacesFrustumAreCulledPerFace) {
+  auto skipping = startLesson(kLesson, {"shadow.cache=false"}, 160, 120);
+  skipping->renderFrame();
+  // Nine casters, five faces: each face draws only those its frustum reaches.
+  EXPECT_GT(counter(*skipping, "culled_objects"), 20);
+  auto all = startLesson(kLesson, {"shadow.cache=false", "cube.skip=false"}, 160, 120);
+  all->renderFrame();
+  EXPECT_EQ(all->measure().lastFrameCounts().count("culled_objects"), 0u);
+  EXPECT_GT(reportNumber(*all, "/counters/shadow/draw_calls"),
+            reportNumber(*skipping, "/counters/shadow/draw_calls"));
+}
+
+TEST(Lesson11, FacesOutOfTheEyesSightWaitUntilTheEyeTurnsToThem) {
+  // Standing at the front of the room looking out of it: the eye sees nothing the faces
+  // looking left, right, down or back shadow (nor the empty +y); only +z, the crate's, is drawn.
+  const std::vector<std::string> away = {"camera.pos=0,2.3,5", "camera.target=0,2.3,10"};
+  auto runner = startLesson(kLesson, away, 160, 120);
+  runner->renderFrame();
+  EXPECT_EQ(counter(*runner, "cube_faces_rendered"), 1);
+  EXPECT_EQ(counter(*runner, "cube_faces_unseen"), 4);
+  EXPECT_EQ(testing::reportString(*runner, "/cube_faces/+z"), "rendered");
+  EXPECT_EQ(testing::reportString(*runner, "/cube_faces/-z"), "unseen");
+  // Turned around, the four are rendered then, and only they; the picture is a fresh cube's.
+  ASSERT_EQ(runner->params().set("camera.target", "0,1.3,-0.8"), "");
+  runner->renderFrame();
+  EXPECT_EQ(counter(*runner, "cube_faces_rendered"), 4);
+  const Image turned = runner->readImage();
+  runner.reset();  // one GL context at a time
+  auto fresh = startLesson(kLesson, {"camera.pos=0,2.3,5", "camera.target=0,1.3,-0.8"}, 160, 120);
+  fresh->renderFrame();
+  EXPECT_EQ(testing::pixelsDiffering(turned, fresh->readImage(), 0), 0u);
+}
+
+TEST(Lesson11, EveryCubeInputRendersTheCubeAgain) {
+  auto runner = startLesson(kLesson, {}, 160, 120);
+  const auto renders = [&] {
+    runner->renderFrame();
+    return counter(*runner, "shadow_map_renders");
+  };
+  EXPECT_EQ(renders(), 1);
+  EXPECT_EQ(renders(), 0);
+  for (const std::string input :
+       {"light.pos=1,2.8,-0.5", "light.near=0.3", "light.far=15", "cube.size=256",
+        "cube.store=depth", "cube.bits=16", "cube.skip=false", "scene=torus_pyramid"}) {
+    ASSERT_EQ(runner->params().assign(input), "") << input;
+    EXPECT_EQ(renders(), 1) << input << " must render the cube again";
+    const Image cached = runner->readImage();
+    ASSERT_EQ(runner->params().assign("shadow.cache=false"), "");
+    EXPECT_EQ(renders(), 1);
+    EXPECT_EQ(testing::pixelsDiffering(cached, runner->readImage(), 0), 0u) << input;
+    ASSERT_EQ(runner->params().assign("shadow.cache=true"), "");
+    renders();
+    EXPECT_EQ(renders(), 0) << input << ": a static frame keeps the cube";
+  }
+  // A caster moved (the ball) renders it again too.
+  runner.reset();  // one GL context at a time
+  runner = startLesson(kLesson, {}, 160, 120);
+  renders();
+  size_t ball = 0;
+  while (runner->scene().objects[ball].name != "ball") ++ball;
+  runner->setObjectModel(ball, glm::translate(runner->presetModel(ball), {-0.5f, 0.3f, 0.0f}));
+  EXPECT_EQ(renders(), 1);
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
+TEST(Lesson11, SeamlessFilteringReadsAcrossFaceEdges) {
+  // Big texels, blended compares: with the faces filtered one by one, a lookup near an edge
+  // clamps to its own face. README: at 32 texels a side the seams' false lit is 0.24 % without
+  // and 0.23 % with seamless filtering.
+  struct Seen {
+    Image image;
+    bool used = false;
+    double seams_false_lit = 0.0;
+  };
+  const auto look = [](bool seamless) {
+    auto runner = startLesson(kLesson,
+                              {"cube.size=32", "cube.filter=linear",
+                               std::string("cube.seamless=") + (seamless ? "true" : "false")},
+                              640, 480);
+    runner->renderFrame();
+    runner->measureError();
+    return Seen{runner->readImage(),
+                testing::reportValue(*runner, "/cube_seamless_used").get<bool>(),
+                reportNumber(*runner, "/error/seams/false_lit_pct")};
+  };
+  const Seen across = look(true);
+  const Seen per_face = look(false);
+  EXPECT_TRUE(across.used);
+  EXPECT_FALSE(per_face.used);
+  EXPECT_GT(testing::pixelsDiffering(across.image, per_face.image, 0), 0u);
+  EXPECT_LT(across.seams_false_lit, per_face.seams_false_lit);
+}
+
+TEST(Lesson11, SliderExtremesStayFiniteAndErrorFree) {
+  testing::expectFiniteAndErrorFree(
+      kLesson, {{"cube.size=16", "cube.filter=linear"},
+                {"cube.size=2048", "cube.bits=32"},
+                {"cube.store=depth", "cube.bits=16", "light.near=0.001", "light.far=1000"},
+                {"light.near=100", "light.far=1000"},
+                {"bias.world=0.5", "bias.normal=4"},
+                {"light.pos=50,50,50"},
+                {"light.pos=0,0,0"}});
+}
+
+}  // namespace
+}  // namespace shadows
