@@ -56,6 +56,10 @@ class OmniCube final : public Lesson {
                           "linear: the hardware's 2x2 compare, blended (bilinear PCF)");
     seamless_ = p.addBool("cube.seamless", true,
                           "linear filtering reads across face edges (always, on ES and WebGL)");
+    passes_ = p.addChoice("cube.passes", {"six", "layered"}, "six",
+                          "six: one pass a face; layered: one pass, a geometry shader sends each "
+                          "triangle to its faces (desktop GL)",
+                          kDirtyShadowMap);
     skip_ = p.addBool("cube.skip", true,
                       "skip faces with no caster or out of the eye's sight, and casters outside "
                       "a face's frustum",
@@ -80,6 +84,9 @@ class OmniCube final : public Lesson {
   void init() override {
     depth_programs_ = ProgramVariants(lessonFile(LESSON_DIR, "cube_depth.vert"),
                                       lessonFile(LESSON_DIR, "cube_depth.frag"));
+    layered_programs_ = ProgramVariants(lessonFile(LESSON_DIR, "cube_layered.vert"),
+                                        lessonFile(LESSON_DIR, "cube_layered.geom"),
+                                        lessonFile(LESSON_DIR, "cube_depth.frag"));
     eye_programs_ = ProgramVariants(commonShaderDir() / "shadow_coord.vert",
                                     lessonFile(LESSON_DIR, "scene.frag"));
     cross_programs_ = ProgramVariants(commonShaderDir() / "fullscreen.vert",
@@ -137,7 +144,9 @@ class OmniCube final : public Lesson {
   }
 
   void report(JsonWriter& json) const override {
-    json.value("cube_passes", "six");  // one pass a face; a layered pass is not built yet
+    // One pass a face, or one layered pass, and why not the layered one where it was asked for.
+    json.value("cube_passes", layered_used_ ? "layered" : "six");
+    json.value("cube_passes_fallback", passesFallback());
     json.value("cube_store", store_.name());
     json.value("cube_seamless_used",
                filter_.name() == "linear" && (seamless_() || !caps().seamless_cube_switch));
@@ -164,6 +173,9 @@ class OmniCube final : public Lesson {
     ImGui::TextWrapped("cube faces: %s", faces.c_str());
     ImGui::TextWrapped("this frame rendered %lld face(s); the cube is kept while nothing moves",
                        count("cube_faces_rendered"));
+    if (const std::string why = passesFallback(); !why.empty()) {
+      ImGui::TextWrapped("cube.passes: six, %s", why.c_str());
+    }
     if (filter_.name() == "linear" && !caps().seamless_cube_switch) {
       ImGui::TextWrapped("cube.seamless: always on with %s", caps().flavour.c_str());
     }
@@ -208,6 +220,12 @@ class OmniCube final : public Lesson {
         framebuffers_[static_cast<size_t>(i)]->attachDepth(cube_, i);
         framebuffers_[static_cast<size_t>(i)]->check();
       }
+      layered_framebuffer_.reset();
+      if (caps().geometry_shaders) {
+        layered_framebuffer_ = std::make_unique<Framebuffer>();
+        layered_framebuffer_->attachDepthLayered(cube_);
+        layered_framebuffer_->check();
+      }
     }
     const bool stale = f.params.consume(kDirtyShadowMap) || !cache_() || recreated;
     if (stale) {
@@ -223,9 +241,11 @@ class OmniCube final : public Lesson {
     }
     const glm::mat4 projection = cube::faceProjection(near_, far_);
     const glm::mat4 eye = f.projection * f.view;
-    int rendered = 0, empty = 0, unseen = 0;
+    int rendered = 0, empty = 0, unseen = 0, mask = 0;
+    std::array<glm::mat4, 6> faces;
     for (int i = 0; i < 6; ++i) {
-      const glm::mat4 face = projection * cube::faceView(light_, i);
+      const glm::mat4& face = faces[static_cast<size_t>(i)] =
+          projection * cube::faceView(light_, i);
       has_casters_[static_cast<size_t>(i)] = !skip_() || anyCasterIn(f, face);
       seen_[static_cast<size_t>(i)] = !skip_() || !cube::frustaDisjoint(face, eye);
       if (!has_casters_[static_cast<size_t>(i)])
@@ -236,9 +256,17 @@ class OmniCube final : public Lesson {
           !seen_[static_cast<size_t>(i)]) {
         continue;
       }
-      renderFace(f, i, face);
+      mask |= 1 << i;
       drawn_[static_cast<size_t>(i)] = true;
       ++rendered;
+    }
+    layered_used_ = passes_.name() == "layered" && layered_framebuffer_ != nullptr;
+    if (layered_used_ && mask != 0) {
+      renderLayered(f, mask, faces);
+    } else {
+      for (int i = 0; i < 6; ++i) {
+        if ((mask >> i) & 1) renderFace(f, i, faces[static_cast<size_t>(i)]);
+      }
     }
     f.measure.count("shadow_map_renders", rendered > 0 ? 1 : 0);
     f.measure.count("cube_faces_rendered", rendered);
@@ -255,6 +283,22 @@ class OmniCube final : public Lesson {
     d.set("uLightPos", light_);
     d.set("uCubeFar", far_);
     f.drawObjects(d, Objects::Casters, skip_() ? &face : nullptr);
+  }
+
+  // Every face the frame needs in one pass: the geometry shader copies each triangle into the
+  // faces of `mask` whose frustum it reaches (gl_Layer), so each caster is drawn once.
+  void renderLayered(Frame& f, int mask, const std::array<glm::mat4, 6>& faces) {
+    auto timing = f.measure.pass("shadow");
+    layered_framebuffer_->bind();
+    glViewport(0, 0, cube_size_, cube_size_);
+    const Program& d = layered_programs_.get({store_.defines()});
+    for (int i = 0; i < 6; ++i) {
+      d.set("uFaceViewProjection[" + std::to_string(i) + "]", faces[static_cast<size_t>(i)]);
+    }
+    d.set("uFaceMask", mask);
+    d.set("uLightPos", light_);
+    d.set("uCubeFar", far_);
+    f.drawObjects(d, Objects::Casters);
   }
 
   bool anyCasterIn(const Frame& f, const glm::mat4& face) const {
@@ -289,20 +333,28 @@ class OmniCube final : public Lesson {
     p.set("uCubeSize", static_cast<float>(cube_size_));
   }
 
+  std::string passesFallback() const {
+    return passes_.name() == "layered" && !caps().geometry_shaders
+               ? "no geometry shaders on " + caps().flavour
+               : "";
+  }
+
   std::string faceState(int i) const {
     const auto k = static_cast<size_t>(i);
     return drawn_[k] ? "rendered" : !has_casters_[k] ? "empty" : !seen_[k] ? "unseen" : "off";
   }
 
   ChoiceParam<Store> store_;
-  ChoiceParam<> bits_, filter_;
+  ChoiceParam<> bits_, filter_, passes_;
   IntParam size_;
   BoolParam seamless_, skip_, cache_, off_;
   FloatParam bias_, normal_, dimming_;
-  ProgramVariants depth_programs_, eye_programs_, cross_programs_;
+  ProgramVariants depth_programs_, layered_programs_, eye_programs_, cross_programs_;
   Sampler compare_nearest_, compare_linear_, raw_;
   Texture cube_;
   std::array<std::unique_ptr<Framebuffer>, 6> framebuffers_;
+  std::unique_ptr<Framebuffer> layered_framebuffer_;  // the whole cube (GL 3.2)
+  bool layered_used_ = false;
   int cube_size_ = 0, cube_bits_ = 0;
   std::array<bool, 6> drawn_{}, has_casters_{}, seen_{};
   glm::vec3 light_{0.0f};

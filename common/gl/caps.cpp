@@ -96,6 +96,7 @@ bool loadGl(GLADloadfunc load) {
   c.depth_clamp = GLAD_GL_VERSION_3_2 != 0;
   c.texture_gather = GLAD_GL_VERSION_4_0 != 0;
   c.seamless_cube_switch = GLAD_GL_VERSION_3_2 != 0;
+  c.geometry_shaders = GLAD_GL_VERSION_3_2 != 0;
   c.pipeline_statistics = GLAD_GL_ARB_pipeline_statistics_query != 0;
   c.debug_output = GLAD_GL_KHR_debug != 0;
 #if SHADOWS_GL_VERSION >= 430
@@ -116,6 +117,7 @@ bool loadGl(GLADloadfunc load) {
     if (named("float_linear")) c.float_linear = false;
     if (named("anisotropy")) c.max_anisotropy = 1.0f;
     if (named("texture_gather")) c.texture_gather = false;
+    if (named("geometry_shaders")) c.geometry_shaders = false;
   }
   g_caps = c;
   return true;

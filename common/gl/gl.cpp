@@ -366,6 +366,18 @@ void Framebuffer::attachDepth(const Texture& depth, int cubeFace) {
   }
 }
 
+void Framebuffer::attachDepthLayered([[maybe_unused]] const Texture& cube) {
+#if SHADOWS_GLES
+  throw GlFailure("layered framebuffers need GL 3.2 or ES 3.2");
+#else
+  glBindFramebuffer(GL_FRAMEBUFFER, name_.id());
+  glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, cube.id(), 0);
+  const GLenum none = GL_NONE;
+  glDrawBuffers(1, &none);
+  glReadBuffer(GL_NONE);
+#endif
+}
+
 void Framebuffer::attachDepthStencil(const Texture& depthStencil) {
   glBindFramebuffer(GL_FRAMEBUFFER, name_.id());
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,

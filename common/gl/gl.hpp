@@ -209,6 +209,9 @@ class Framebuffer {
   Framebuffer();
   // `cubeFace` 0..5 (+x, -x, +y, -y, +z, -z): that face of a cube map.
   void attachDepth(const Texture& depth, int cubeFace = -1);
+  // Every face of a cube map at once, for a pass that picks the face per primitive
+  // (gl_Layer from a geometry shader; desktop GL 3.2).
+  void attachDepthLayered(const Texture& cube);
   void attachDepthStencil(const Texture& depthStencil);
   void attachColor(const Texture& color, int index = 0);
   void check() const;  // throws GlFailure when incomplete

@@ -182,21 +182,38 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::string>&
 }
 
 Program::Program(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile,
+                 const std::vector<std::string>& defines)
+    : Program(vertexFile, {}, fragmentFile, defines) {}
+
+Program::Program(const std::filesystem::path& vertexFile, const std::filesystem::path& geometryFile,
+                 const std::filesystem::path& fragmentFile,
                  const std::vector<std::string>& defines) {
-  const GLuint vs = compile(GL_VERTEX_SHADER, vertexFile, defines);
-  GLuint fs = 0;
+  std::vector<GLuint> shaders;
+  const auto release = [&] {
+    for (const GLuint shader : shaders) glDeleteShader(shader);
+  };
   try {
-    fs = compile(GL_FRAGMENT_SHADER, fragmentFile, defines);
+    shaders.push_back(compile(GL_VERTEX_SHADER, vertexFile, defines));
+    if (!geometryFile.empty()) {
+#if SHADOWS_GLES
+      throw GlFailure(geometryFile.filename().string() + ": no geometry shaders on " +
+                      caps().flavour);
+#else
+      if (!caps().geometry_shaders) {
+        throw GlFailure(geometryFile.filename().string() + ": no geometry shaders here");
+      }
+      shaders.push_back(compile(GL_GEOMETRY_SHADER, geometryFile, defines));
+#endif
+    }
+    shaders.push_back(compile(GL_FRAGMENT_SHADER, fragmentFile, defines));
   } catch (...) {
-    glDeleteShader(vs);
+    release();
     throw;
   }
   const GLuint program = glCreateProgram();
-  glAttachShader(program, vs);
-  glAttachShader(program, fs);
+  for (const GLuint shader : shaders) glAttachShader(program, shader);
   glLinkProgram(program);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
+  release();
   GLint ok = 0;
   glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (!ok) {
@@ -239,7 +256,7 @@ const Program& ProgramVariants::get(std::initializer_list<std::vector<std::strin
   g_used.push_back(fragment_.filename().string() + ": " + selected);
   auto it = programs_.find(key);
   if (it == programs_.end()) {
-    it = programs_.emplace(key, Program(vertex_, fragment_, defines)).first;
+    it = programs_.emplace(key, Program(vertex_, geometry_, fragment_, defines)).first;
     ++g_compiled;
   }
   return it->second;

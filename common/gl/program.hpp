@@ -21,6 +21,10 @@ class Program {
   Program() = default;
   Program(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile,
           const std::vector<std::string>& defines = {});
+  // With a geometry shader between them (Caps::geometry_shaders: desktop GL 3.2; throws
+  // GlFailure where the flavour has none).
+  Program(const std::filesystem::path& vertexFile, const std::filesystem::path& geometryFile,
+          const std::filesystem::path& fragmentFile, const std::vector<std::string>& defines);
   void use() const;
   GLint location(const std::string& name) const;
   void set(const std::string& name, int v) const;
@@ -46,6 +50,12 @@ class ProgramVariants {
   ProgramVariants() = default;
   ProgramVariants(std::filesystem::path vertexFile, std::filesystem::path fragmentFile)
       : vertex_(std::move(vertexFile)), fragment_(std::move(fragmentFile)) {}
+  // With a geometry shader (lesson 11's layered pass), compiled on first use like the rest.
+  ProgramVariants(std::filesystem::path vertexFile, std::filesystem::path geometryFile,
+                  std::filesystem::path fragmentFile)
+      : vertex_(std::move(vertexFile)),
+        geometry_(std::move(geometryFile)),
+        fragment_(std::move(fragmentFile)) {}
   // The program for these defines, each part the lines one setting contributes:
   // get({pcf_mode_.defines(), define("PCF_COUNT", counting), frame.viewDefines()}).
   const Program& get(std::initializer_list<std::vector<std::string>> parts);
@@ -58,7 +68,7 @@ class ProgramVariants {
   static long long compiledTotal();
 
  private:
-  std::filesystem::path vertex_, fragment_;
+  std::filesystem::path vertex_, geometry_, fragment_;
   std::map<std::string, Program> programs_;  // by the defines, joined
 };
 
