@@ -114,7 +114,7 @@ for l in $lessons; do
   ln -s shadows_lessons "$out/bin/$l"
   mkdir -p "$out/share/shadows/$l"
   # The shaders and whatever a lesson reads next to its main.cpp (not its pictures or docs).
-  find "$here/$l" -maxdepth 1 -type f \( -name '*.vert' -o -name '*.frag' -o -name '*.glsl' \) \
+  find "$here/$l" -maxdepth 1 -type f \( -name '*.vert' -o -name '*.frag' -o -name '*.glsl' -o -name '*.geom' \) \
     -exec cp {} "$out/share/shadows/$l/" \;
 done
 mkdir -p "$out/share/shadows/common"
