@@ -153,7 +153,7 @@ class OmniCube final : public Lesson {
     // What the cube holds, whichever frame rendered it: a cached frame renders no face.
     json.value("cube_faces_in_use",
                static_cast<long long>(std::count(drawn_.begin(), drawn_.end(), true)));
-    json.value("cube_bytes", 6LL * cube_size_ * cube_size_ * (cube_bits_ / 8));
+    json.value("cube_bytes", 6LL * cube_size_ * cube_size_ * bytesPerTexel());
     json.beginObject("cube_faces");
     for (int i = 0; i < 6; ++i) json.value(cube::kFaceNames[static_cast<size_t>(i)], faceState(i));
     json.endObject();
@@ -187,14 +187,15 @@ class OmniCube final : public Lesson {
     return {{.title = "A small cube that is still right",
              .goal = "With 64-texel faces the bulb's shadows are blocky: 0.29 % false shadow and "
                      "0.43 % false lit. Bring each to 0.2 % or less with a cube of at most "
-                     "300000 bytes (six faces of size x size texels, bits / 8 bytes each).",
+                     "300000 bytes: six faces of size x size texels, 2 bytes a texel at 16 bits, "
+                     "4 at 24 (padded) and 32.",
              .setup = {"cube.size=64"},
              .allowed = {"cube.size", "cube.bits", "cube.filter", "bias.world", "bias.normal"},
              .figures = {{"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.2},
                          {"/error/false_lit_pct", "false lit %", B::AtMost, 0.2},
                          {"/cube_bytes", "cube bytes", B::AtMost, 300000}},
-             .hint = "The texels are where the bytes go, but the hardware can also blend the "
-                     "four compares around each lookup."},
+             .hint = "Is the error in the texels' size or in their depth's bits? Spend the bytes "
+                     "where the error is."},
             {.title = "Dueling frusta around a bulb",
              .goal = "Light and eye face each other: every face the eye looks into is magnified. "
                      "At 512 texels a face the preset has 0.33 % false shadow and 0.48 % false "
@@ -332,6 +333,9 @@ class OmniCube final : public Lesson {
     p.set("uCubeFar", far_);
     p.set("uCubeSize", static_cast<float>(cube_size_));
   }
+
+  // As the GL stores it: 24-bit depth is padded to 32 bits a texel.
+  int bytesPerTexel() const { return cube_bits_ == 16 ? 2 : 4; }
 
   std::string passesFallback() const {
     return passes_.name() == "layered" && !caps().geometry_shaders

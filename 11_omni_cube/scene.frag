@@ -35,7 +35,13 @@ float reference(vec3 v) {
 
 float shadowTerm(vec3 n) {
   vec3 v = offsetPosition(n) - uLightPos;
-  if (majorDistance(v) >= uCubeFar) return 1.0;  // beyond every face's far plane: unshadowed
+  // Beyond far nothing was stored: unshadowed, in each store's own measure of far (a float
+  // depth would not clamp a reference past 1 as the fixed-point formats do).
+#if CUBE_STORE == CUBE_STORE_DISTANCE
+  if (length(v) >= uCubeFar) return 1.0;
+#else
+  if (majorDistance(v) >= uCubeFar) return 1.0;
+#endif
   return texture(uCube, vec4(v, reference(v)));
 }
 
