@@ -10,7 +10,24 @@ uniform float uAspect;       // the target's width over height
 uniform int uFacesRendered;  // bit i: face i holds casters rendered since the map changed
 out vec4 outColor;
 
+uniform sampler2D uParaboloidUpRaw;    // omni.method=paraboloid: the two disks instead
+uniform sampler2D uParaboloidDownRaw;
+
 void main() {
+#if OMNI_METHOD == OMNI_METHOD_PARABOLOID
+  // The two hemispheres side by side, upper left, lower right, each a disk of radius 1.
+  vec2 half_ = vec2(fract(vUv.x * 2.0), vUv.y);
+  vec2 q2 = 2.0 * half_ - 1.0;
+  q2.y *= 2.0 / uAspect;  // each half is aspect/2 as wide as it is high
+  if (dot(q2, q2) > 1.0) {
+    outColor = vec4(0.08, 0.08, 0.1, 1.0);
+    return;
+  }
+  vec2 uv = 0.5 * q2 + 0.5;
+  float d = vUv.x < 0.5 ? texture(uParaboloidUpRaw, uv).r : texture(uParaboloidDownRaw, uv).r;
+  outColor = vec4(vec3(sqrt(clamp(d, 0.0, 1.0))), 1.0);
+  return;
+#endif
   // A 4:3 cross centred in the target.
   vec2 p = vUv;
   if (uAspect > 4.0 / 3.0) {

@@ -16,6 +16,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <utility>
 
 #include "core/json.hpp"
 #include "cube_math.hpp"
@@ -46,6 +48,10 @@ class OmniCube final : public Lesson {
 
   void declare(Params& p) override {
     constexpr auto kMap = kDirtyShadowMap | kDirtyResources;
+    method_ = p.addChoice("omni.method", {"cube", "paraboloid"}, "cube",
+                          "cube: six 90° frusta; paraboloid: two hemispheres warped in the vertex "
+                          "shader, as many texels as the cube",
+                          kDirtyShadowMap | kDirtyResources);
     size_ = p.addInt("cube.size", 512, 16, 2048, "texels along each face's side", kMap).logScale();
     store_ = p.addChoice("cube.store", kStores, "distance",
                          "distance: |p - light| / far, written linear; depth: each face's own "
@@ -87,6 +93,8 @@ class OmniCube final : public Lesson {
     layered_programs_ = ProgramVariants(lessonFile(LESSON_DIR, "cube_layered.vert"),
                                         lessonFile(LESSON_DIR, "cube_layered.geom"),
                                         lessonFile(LESSON_DIR, "cube_depth.frag"));
+    paraboloid_programs_ = ProgramVariants(lessonFile(LESSON_DIR, "paraboloid.vert"),
+                                           lessonFile(LESSON_DIR, "paraboloid.frag"));
     eye_programs_ = ProgramVariants(commonShaderDir() / "shadow_coord.vert",
                                     lessonFile(LESSON_DIR, "scene.frag"));
     cross_programs_ = ProgramVariants(commonShaderDir() / "fullscreen.vert",
@@ -105,6 +113,8 @@ class OmniCube final : public Lesson {
            {"shadow_map_renders", "cube_faces_rendered", "cube_faces_empty", "cube_faces_unseen"}) {
         f.measure.count(name, 0);
       }
+    } else if (paraboloid()) {
+      renderParaboloids(f);
     } else {
       renderCube(f);
     }
@@ -116,10 +126,11 @@ class OmniCube final : public Lesson {
     (filter_.name() == "linear" ? compare_linear_ : compare_nearest_).bind(0);
     cube_.bind(1);
     raw_.bind(1);
+    bindParaboloids();
     // Desktop GL filters each face on its own unless told; ES and WebGL always across.
     setSeamlessCubeFiltering(seamless_());
-    const Program& e =
-        eye_programs_.get({store_.defines(), f.viewDefines(), define("SHADOW_OFF", off_())});
+    const Program& e = eye_programs_.get(
+        {method_.defines(), store_.defines(), f.viewDefines(), define("SHADOW_OFF", off_())});
     e.set("uViewProjection", f.projection * f.view);
     e.set("uShadowMatrix", glm::mat4(1.0f));
     e.set("uCube", 0);
@@ -130,8 +141,7 @@ class OmniCube final : public Lesson {
     f.setLightingUniforms(e, dimming_());
     f.drawObjects(e, Objects::All);
     setSeamlessCubeFiltering(false);  // the GL's default, for every other pass
-    Sampler::unbind(0);
-    Sampler::unbind(1);
+    for (int unit = 0; unit < 6; ++unit) Sampler::unbind(unit);
   }
 
   // Within two texels of a face's edge, from the light: where filtering reads across a seam.
@@ -144,6 +154,8 @@ class OmniCube final : public Lesson {
   }
 
   void report(JsonWriter& json) const override {
+    json.value("omni_method", method_.name());
+    json.value("paraboloid_size", paraboloid() ? paraboloid_size_ : 0);
     // One pass a face, or one layered pass, and why not the layered one where it was asked for.
     json.value("cube_passes", layered_used_ ? "layered" : "six");
     json.value("cube_passes_fallback", passesFallback());
@@ -153,7 +165,9 @@ class OmniCube final : public Lesson {
     // What the cube holds, whichever frame rendered it: a cached frame renders no face.
     json.value("cube_faces_in_use",
                static_cast<long long>(std::count(drawn_.begin(), drawn_.end(), true)));
-    json.value("cube_bytes", 6LL * cube_size_ * cube_size_ * bytesPerTexel());
+    json.value("cube_bytes", paraboloid() ? 2LL * paraboloid_size_ * paraboloid_size_ *
+                                                (paraboloid_bits_ == 16 ? 2 : 4)
+                                          : 6LL * cube_size_ * cube_size_ * bytesPerTexel());
     json.beginObject("cube_faces");
     for (int i = 0; i < 6; ++i) json.value(cube::kFaceNames[static_cast<size_t>(i)], faceState(i));
     json.endObject();
@@ -316,7 +330,8 @@ class OmniCube final : public Lesson {
     if (off_()) return;
     cube_.bind(1);
     raw_.bind(1);
-    const Program& c = cross_programs_.get({store_.defines()});
+    bindParaboloids();
+    const Program& c = cross_programs_.get({method_.defines(), store_.defines()});
     c.set("uCubeRaw", 1);
     setCubeUniforms(c);
     c.set("uAspect", static_cast<float>(f.width) / static_cast<float>(std::max(f.height, 1)));
@@ -324,14 +339,80 @@ class OmniCube final : public Lesson {
     for (int i = 0; i < 6; ++i) drawn |= drawn_[static_cast<size_t>(i)] ? 1 << i : 0;
     c.set("uFacesRendered", drawn);
     f.drawFullscreen(c);
-    Sampler::unbind(1);
+    for (int unit = 1; unit < 6; ++unit) Sampler::unbind(unit);
   }
 
   void setCubeUniforms(const Program& p) const {
     p.set("uLightPos", light_);
     p.set("uCubeNear", near_);
     p.set("uCubeFar", far_);
-    p.set("uCubeSize", static_cast<float>(cube_size_));
+    p.set("uCubeSize", static_cast<float>(paraboloid() ? paraboloid_size_ : cube_size_));
+    for (const auto& [name, unit] : {std::pair{"uParaboloidUp", 2},
+                                     {"uParaboloidDown", 3},
+                                     {"uParaboloidUpRaw", 4},
+                                     {"uParaboloidDownRaw", 5}}) {
+      p.set(name, unit);
+    }
+  }
+
+  bool paraboloid() const { return method_.name() == "paraboloid"; }
+
+  // Dual paraboloids at the cube's texel count: two p x p maps for six s x s faces, p = s √3.
+  int paraboloidSize() const {
+    return static_cast<int>(std::lround(static_cast<double>(size_()) * std::sqrt(3.0)));
+  }
+
+  void bindParaboloids() const {
+    if (!paraboloid() || paraboloid_size_ == 0) return;
+    for (int h = 0; h < 2; ++h) {
+      const Texture& map = paraboloids_[static_cast<size_t>(h)];
+      map.bind(2 + h);
+      (filter_.name() == "linear" ? compare_linear_ : compare_nearest_).bind(2 + h);
+      map.bind(4 + h);
+      raw_.bind(4 + h);
+    }
+  }
+
+  // Pass 1 as two hemispheres, +y then -y, each its half of space warped onto a disk.
+  void renderParaboloids(Frame& f) {
+    const int bits = std::stoi(bits_.name());
+    const int size = paraboloidSize();
+    const bool recreated = size != paraboloid_size_ || bits != paraboloid_bits_;
+    if (recreated) {
+      for (int h = 0; h < 2; ++h) {
+        const auto k = static_cast<size_t>(h);
+        paraboloids_[k] = Texture::depth(size, size, bits);
+        // Outside the disk nothing is stored: lit.
+        paraboloid_framebuffers_[k] = std::make_unique<Framebuffer>();
+        paraboloid_framebuffers_[k]->attachDepth(paraboloids_[k]);
+        paraboloid_framebuffers_[k]->check();
+      }
+      paraboloid_size_ = size, paraboloid_bits_ = bits;
+    }
+    const bool stale = f.params.consume(kDirtyShadowMap) || !cache_() || recreated;
+    drawn_.fill(false);  // the cube holds nothing current while the paraboloids are used
+    if (stale) {
+      const Program& d = paraboloid_programs_.get({});
+      PassState state;
+      state.clip_plane = true;  // the other hemisphere
+      for (int h = 0; h < 2; ++h) {
+        auto timing = f.measure.pass("shadow");
+        paraboloid_framebuffers_[static_cast<size_t>(h)]->bind();
+        glViewport(0, 0, size, size);
+        PassState{}.apply();
+        glClear(GL_DEPTH_BUFFER_BIT);
+        state.apply();
+        d.set("uLightPos", light_);
+        d.set("uHemisphere", h == 0 ? 1.0f : -1.0f);
+        d.set("uCubeFar", far_);
+        f.drawObjects(d, Objects::Casters);
+        PassState{}.apply();
+      }
+    }
+    f.measure.count("shadow_map_renders", stale ? 1 : 0);
+    for (const char* name : {"cube_faces_rendered", "cube_faces_empty", "cube_faces_unseen"}) {
+      f.measure.count(name, 0);
+    }
   }
 
   // As the GL stores it: 24-bit depth is padded to 32 bits a texel.
@@ -349,16 +430,20 @@ class OmniCube final : public Lesson {
   }
 
   ChoiceParam<Store> store_;
-  ChoiceParam<> bits_, filter_, passes_;
+  ChoiceParam<> bits_, filter_, passes_, method_;
   IntParam size_;
   BoolParam seamless_, skip_, cache_, off_;
   FloatParam bias_, normal_, dimming_;
-  ProgramVariants depth_programs_, layered_programs_, eye_programs_, cross_programs_;
+  ProgramVariants depth_programs_, layered_programs_, paraboloid_programs_, eye_programs_,
+      cross_programs_;
   Sampler compare_nearest_, compare_linear_, raw_;
   Texture cube_;
   std::array<std::unique_ptr<Framebuffer>, 6> framebuffers_;
   std::unique_ptr<Framebuffer> layered_framebuffer_;  // the whole cube (GL 3.2)
   bool layered_used_ = false;
+  std::array<Texture, 2> paraboloids_;  // omni.method=paraboloid: +y, -y
+  std::array<std::unique_ptr<Framebuffer>, 2> paraboloid_framebuffers_;
+  int paraboloid_size_ = 0, paraboloid_bits_ = 0;
   int cube_size_ = 0, cube_bits_ = 0;
   std::array<bool, 6> drawn_{}, has_casters_{}, seen_{};
   glm::vec3 light_{0.0f};

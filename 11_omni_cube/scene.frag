@@ -12,6 +12,10 @@ in vec3 vWorld;
 in vec3 vNormal;
 in vec4 vShadowCoord;  // unused: shadow_coord.vert's 2D lookup, not a cube's
 uniform samplerCubeShadow uCube;  // compare mode on (a sampler object)
+uniform sampler2DShadow uParaboloidUp;    // omni.method=paraboloid: the two hemispheres
+uniform sampler2DShadow uParaboloidDown;
+uniform sampler2D uParaboloidUpRaw;       // the same two, read raw for the views
+uniform sampler2D uParaboloidDownRaw;
 uniform samplerCube uCubeRaw;     // the same texture read raw, for the views
 uniform float uBiasWorld;         // world units, along the ray (distance) or the axis (depth)
 uniform float uBiasNormal;        // texels, along the normal
@@ -33,8 +37,22 @@ float reference(vec3 v) {
 #endif
 }
 
+// The paraboloid's lookup, as paraboloid.vert maps: the hemisphere by the sign of v.y, the
+// texel at (s v.x, v.z) / (|v| + s v.y), compared with the distance store's reference.
+float paraboloidTerm(vec3 v) {
+  float len = length(v);
+  if (len >= uCubeFar) return 1.0;
+  float s = v.y >= 0.0 ? 1.0 : -1.0;
+  vec2 uv = 0.5 * vec2(s * v.x, v.z) / (len + s * v.y) + 0.5;
+  vec3 c = vec3(uv, (len - uBiasWorld) / uCubeFar);
+  return s > 0.0 ? texture(uParaboloidUp, c) : texture(uParaboloidDown, c);
+}
+
 float shadowTerm(vec3 n) {
   vec3 v = offsetPosition(n) - uLightPos;
+#if OMNI_METHOD == OMNI_METHOD_PARABOLOID
+  return paraboloidTerm(v);
+#else
   // Beyond far nothing was stored: unshadowed, in each store's own measure of far (a float
   // depth would not clamp a reference past 1 as the fixed-point formats do).
 #if CUBE_STORE == CUBE_STORE_DISTANCE
@@ -43,6 +61,7 @@ float shadowTerm(vec3 n) {
   if (majorDistance(v) >= uCubeFar) return 1.0;
 #endif
   return texture(uCube, vec4(v, reference(v)));
+#endif
 }
 
 // Six colours, one a face, for the face view.
@@ -66,13 +85,22 @@ void main() {
 #elif VIEW == VIEW_FACE
   // Which face each pixel read, dimmed where it is in shadow.
   vec3 v = vWorld - uLightPos;
-  outColor = vec4(faceColor(majorFace(v)) * (0.35 + 0.65 * shade), 1.0);
+#if OMNI_METHOD == OMNI_METHOD_PARABOLOID
+  int face = v.y >= 0.0 ? 2 : 3;  // the two hemispheres, coloured as +y and -y
+#else
+  int face = majorFace(v);
+#endif
+  outColor = vec4(faceColor(face) * (0.35 + 0.65 * shade), 1.0);
 #elif VIEW == VIEW_FACE_TEXELS
   // Map texels per pixel on the face read: how far one pixel step moves in the face's texels.
   vec3 v = vWorld - uLightPos;
   vec3 a = abs(v);
+#if OMNI_METHOD == OMNI_METHOD_PARABOLOID
+  vec2 st = vec2(v.x, v.z) / (length(v) + (v.y >= 0.0 ? v.y : -v.y));
+#else
   int f = majorFace(v);
   vec2 st = f < 2 ? v.yz / a.x : (f < 4 ? v.xz / a.y : v.xy / a.z);
+#endif
   vec2 texels = 0.5 * uCubeSize * st;
   float per_pixel = max(length(dFdx(texels)), length(dFdy(texels)));
   // Green near one texel a pixel, red where a texel covers many pixels (blocky), blue where
@@ -83,8 +111,14 @@ void main() {
   outColor = vec4(heat * (0.45 + 0.55 * shade), 1.0);
 #else  // VIEW_DISTANCE: the stored value and the fragment's own, as Kilgard shows a 2D map's
   vec3 v = vWorld - uLightPos;
+#if OMNI_METHOD == OMNI_METHOD_PARABOLOID
+  float s = v.y >= 0.0 ? 1.0 : -1.0;
+  vec2 uv = 0.5 * vec2(s * v.x, v.z) / (length(v) + s * v.y) + 0.5;
+  float stored = s > 0.0 ? texture(uParaboloidUpRaw, uv).r : texture(uParaboloidDownRaw, uv).r;
+#else
   float stored = texture(uCubeRaw, v).r;
-#if CUBE_STORE == CUBE_STORE_DEPTH
+#endif
+#if CUBE_STORE == CUBE_STORE_DEPTH && OMNI_METHOD == OMNI_METHOD_CUBE
   // Back from hyperbolic depth to the distance along the axis, over far.
   float z = 2.0 * stored - 1.0;
   stored = 2.0 * uCubeNear * uCubeFar / (uCubeFar + uCubeNear - z * (uCubeFar - uCubeNear)) / uCubeFar;
