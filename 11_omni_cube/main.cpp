@@ -109,10 +109,8 @@ class OmniCube final : public Lesson {
     near_ = f.light.near;
     far_ = f.light.far;
     if (off_()) {
-      for (const char* name :
-           {"shadow_map_renders", "cube_faces_rendered", "cube_faces_empty", "cube_faces_unseen"}) {
-        f.measure.count(name, 0);
-      }
+      f.measure.count("shadow_map_renders", 0);
+      countFaces(f, 0, 0, 0);
     } else if (paraboloid()) {
       renderParaboloids(f);
     } else {
@@ -165,9 +163,10 @@ class OmniCube final : public Lesson {
     // What the cube holds, whichever frame rendered it: a cached frame renders no face.
     json.value("cube_faces_in_use",
                static_cast<long long>(std::count(drawn_.begin(), drawn_.end(), true)));
-    json.value("cube_bytes", paraboloid() ? 2LL * paraboloid_size_ * paraboloid_size_ *
-                                                (paraboloid_bits_ == 16 ? 2 : 4)
-                                          : 6LL * cube_size_ * cube_size_ * bytesPerTexel());
+    json.value("cube_bytes",
+               paraboloid()
+                   ? 2LL * paraboloid_size_ * paraboloid_size_ * bytesPerTexel(paraboloid_bits_)
+                   : 6LL * cube_size_ * cube_size_ * bytesPerTexel(cube_bits_));
     json.beginObject("cube_faces");
     for (int i = 0; i < 6; ++i) json.value(cube::kFaceNames[static_cast<size_t>(i)], faceState(i));
     json.endObject();
@@ -259,21 +258,19 @@ class OmniCube final : public Lesson {
     int rendered = 0, empty = 0, unseen = 0, mask = 0;
     std::array<glm::mat4, 6> faces;
     for (int i = 0; i < 6; ++i) {
-      const glm::mat4& face = faces[static_cast<size_t>(i)] =
-          projection * cube::faceView(light_, i);
-      has_casters_[static_cast<size_t>(i)] = !skip_() || anyCasterIn(f, face);
-      seen_[static_cast<size_t>(i)] = !skip_() || !cube::frustaDisjoint(face, eye);
-      if (!has_casters_[static_cast<size_t>(i)])
+      const auto k = static_cast<size_t>(i);
+      faces[k] = projection * cube::faceView(light_, i);
+      has_casters_[k] = !skip_() || anyCasterIn(f, faces[k]);
+      seen_[k] = !skip_() || !cube::frustaDisjoint(faces[k], eye);
+      if (!has_casters_[k]) {
         ++empty;
-      else if (!seen_[static_cast<size_t>(i)])
+      } else if (!seen_[k]) {
         ++unseen;
-      if (drawn_[static_cast<size_t>(i)] || !has_casters_[static_cast<size_t>(i)] ||
-          !seen_[static_cast<size_t>(i)]) {
-        continue;
+      } else if (!drawn_[k]) {  // needed, and not in the cube since it last changed
+        mask |= 1 << i;
+        drawn_[k] = true;
+        ++rendered;
       }
-      mask |= 1 << i;
-      drawn_[static_cast<size_t>(i)] = true;
-      ++rendered;
     }
     layered_used_ = passes_.name() == "layered" && layered_framebuffer_ != nullptr;
     if (layered_used_ && mask != 0) {
@@ -284,6 +281,11 @@ class OmniCube final : public Lesson {
       }
     }
     f.measure.count("shadow_map_renders", rendered > 0 ? 1 : 0);
+    countFaces(f, rendered, empty, unseen);
+  }
+
+  // The faces' counters, every frame (0 where no cube was made): the report keeps one set.
+  static void countFaces(Frame& f, int rendered, int empty, int unseen) {
     f.measure.count("cube_faces_rendered", rendered);
     f.measure.count("cube_faces_empty", empty);
     f.measure.count("cube_faces_unseen", unseen);
@@ -410,13 +412,11 @@ class OmniCube final : public Lesson {
       }
     }
     f.measure.count("shadow_map_renders", stale ? 1 : 0);
-    for (const char* name : {"cube_faces_rendered", "cube_faces_empty", "cube_faces_unseen"}) {
-      f.measure.count(name, 0);
-    }
+    countFaces(f, 0, 0, 0);
   }
 
   // As the GL stores it: 24-bit depth is padded to 32 bits a texel.
-  int bytesPerTexel() const { return cube_bits_ == 16 ? 2 : 4; }
+  static int bytesPerTexel(int bits) { return bits == 16 ? 2 : 4; }
 
   std::string passesFallback() const {
     return passes_.name() == "layered" && !caps().geometry_shaders

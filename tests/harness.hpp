@@ -228,10 +228,13 @@ inline std::vector<std::string> readbackMapInputs() {
 
 // With the cache on, each change in `inputs` renders the map again, and what the frame shows
 // is what a map rendered from scratch (cache off) shows; a frame with no change renders none.
+// `start`: by default the fit on, so shadowMapInputs()' first entry (fit off) is a change in
+// every lesson with a ShadowMap; a lesson without one (11's cube) starts from its defaults.
 inline void expectEveryMapInputRendersTheMapAgain(const std::string& lesson,
-                                                  const std::vector<std::string>& inputs) {
-  // The fit on first, so the list's first entry (fit off) is a change in every lesson.
-  auto runner = startLesson(lesson, {"inset=false", "shadow.fit=true"}, 160, 120);
+                                                  const std::vector<std::string>& inputs,
+                                                  const std::vector<std::string>& start = {
+                                                      "inset=false", "shadow.fit=true"}) {
+  auto runner = startLesson(lesson, start, 160, 120);
   const auto renders = [&] {
     runner->renderFrame();
     return runner->measure().lastFrameCounts().at("shadow_map_renders");
@@ -256,8 +259,10 @@ inline void expectEveryMapInputRendersTheMapAgain(const std::string& lesson,
 }
 
 // Moving a caster must render the map again too (Runner::setObjectModel).
-inline void expectACasterMoveRendersTheMapAgain(const std::string& lesson) {
-  auto runner = startLesson(lesson, {"inset=false"}, 160, 120);
+inline void expectACasterMoveRendersTheMapAgain(const std::string& lesson,
+                                                const std::vector<std::string>& start = {
+                                                    "inset=false"}) {
+  auto runner = startLesson(lesson, start, 160, 120);
   runner->renderFrame();
   runner->renderFrame();
   size_t caster = 0;

@@ -22,10 +22,15 @@ glm::mat4 translate(glm::vec3 t) {
   return glm::translate(glm::mat4(1.0f), t);
 }
 
-// A floor that receives but casts nothing (nothing lies below it), so the shadow pass can
-// skip it.
+// A one-sided plane that receives but casts nothing (a floor, a wall: nothing lies behind
+// it), so the shadow pass can skip it while the light is in front of it.
+SceneObject receiverPlane(const std::string& name, float halfX, float halfZ, const glm::mat4& model,
+                          glm::vec3 color) {
+  return {name, makePlane(halfX, halfZ), model, color, false, true};
+}
+
 SceneObject floorObject(float half, float y) {
-  return {"floor", makePlane(half, half), translate({0, y, 0}), {0.75f, 0.75f, 0.72f}, false, true};
+  return receiverPlane("floor", half, half, translate({0, y, 0}), {0.75f, 0.75f, 0.72f});
 }
 
 Scene torusPyramid() {
@@ -57,12 +62,12 @@ Scene room() {
   const glm::vec3 plaster{0.72f, 0.7f, 0.66f};
   s.objects.push_back(floorObject(6.0f, 0.0f));
   // Walls receive but cast nothing: the light is inside the room, they bound what it sees.
-  s.objects.push_back({"back_wall", makePlane(6.0f, 3.0f),
-                       translate({0, 3, -5}) * glm::rotate(one, glm::radians(90.0f), {1, 0, 0}),
-                       plaster, false, true});
-  s.objects.push_back({"left_wall", makePlane(3.0f, 5.0f),
-                       translate({-6, 3, 0}) * glm::rotate(one, glm::radians(-90.0f), {0, 0, 1}),
-                       plaster, false, true});
+  s.objects.push_back(receiverPlane(
+      "back_wall", 6.0f, 3.0f,
+      translate({0, 3, -5}) * glm::rotate(one, glm::radians(90.0f), {1, 0, 0}), plaster));
+  s.objects.push_back(receiverPlane(
+      "left_wall", 3.0f, 5.0f,
+      translate({-6, 3, 0}) * glm::rotate(one, glm::radians(-90.0f), {0, 0, 1}), plaster));
   s.objects.push_back({"pillar",
                        makeBox({0.35f, 1.6f, 0.35f}),
                        translate({-0.6f, 1.6f, -1.0f}),
@@ -88,15 +93,15 @@ Scene bulb() {
   const glm::mat4 one(1.0f);
   const glm::vec3 plaster{0.72f, 0.7f, 0.66f};
   s.objects.push_back(floorObject(6.0f, 0.0f));
-  s.objects.push_back({"back_wall", makePlane(6.0f, 3.0f),
-                       translate({0, 3, -6}) * glm::rotate(one, glm::radians(90.0f), {1, 0, 0}),
-                       plaster, false, true});
-  s.objects.push_back({"left_wall", makePlane(3.0f, 6.0f),
-                       translate({-6, 3, 0}) * glm::rotate(one, glm::radians(-90.0f), {0, 0, 1}),
-                       plaster, false, true});
-  s.objects.push_back({"right_wall", makePlane(3.0f, 6.0f),
-                       translate({6, 3, 0}) * glm::rotate(one, glm::radians(90.0f), {0, 0, 1}),
-                       plaster, false, true});
+  s.objects.push_back(receiverPlane(
+      "back_wall", 6.0f, 3.0f,
+      translate({0, 3, -6}) * glm::rotate(one, glm::radians(90.0f), {1, 0, 0}), plaster));
+  s.objects.push_back(receiverPlane(
+      "left_wall", 3.0f, 6.0f,
+      translate({-6, 3, 0}) * glm::rotate(one, glm::radians(-90.0f), {0, 0, 1}), plaster));
+  s.objects.push_back(receiverPlane(
+      "right_wall", 3.0f, 6.0f,
+      translate({6, 3, 0}) * glm::rotate(one, glm::radians(90.0f), {0, 0, 1}), plaster));
   s.objects.push_back({"table_top",
                        makeBox({0.9f, 0.04f, 0.6f}),
                        translate({0.2f, 1.0f, 0.1f}),
@@ -135,9 +140,9 @@ Scene bulb() {
 // holds them and only the projection decides how well they are shadowed.
 void addWallAndTable(Scene& s, const glm::mat4& wall, glm::vec3 tableAt, float tilt) {
   const glm::mat4 one(1.0f);
-  s.objects.push_back({"wall", makePlane(8.0f, 3.0f), wall, {0.72f, 0.7f, 0.66f}, false, true});
+  s.objects.push_back(receiverPlane("wall", 8.0f, 3.0f, wall, {0.72f, 0.7f, 0.66f}));
   const glm::mat4 table = translate(tableAt) * glm::rotate(one, glm::radians(tilt), {1, 0, 0});
-  s.objects.push_back({"table", makePlane(1.4f, 0.9f), table, {0.62f, 0.5f, 0.38f}, false, true});
+  s.objects.push_back(receiverPlane("table", 1.4f, 0.9f, table, {0.62f, 0.5f, 0.38f}));
   // The board under the top casts its shadow (the plane alone casts nothing); a little wider,
   // so that its shadow covers the top's, which the ray-traced truth also sees.
   s.objects.push_back({"board",
@@ -165,7 +170,7 @@ Scene strategy() {
   const glm::mat4 one(1.0f);
   // The floor ends at the wall: the wall, a receiver, casts nothing onto a floor behind it.
   s.objects.push_back(
-      {"floor", makePlane(12.0f, 10.0f), translate({0, 0, 3}), {0.75f, 0.75f, 0.72f}, false, true});
+      receiverPlane("floor", 12.0f, 10.0f, translate({0, 0, 3}), {0.75f, 0.75f, 0.72f}));
   addWallAndTable(s, translate({0, 3, -7}) * glm::rotate(one, glm::radians(90.0f), {1, 0, 0}),
                   {3.0f, 0.9f, 1.5f}, 18.0f);
   for (int i = 0; i < 6; ++i) {

@@ -51,14 +51,26 @@ Sampler Sampler::depth(bool compare, GLenum filter) {
   return sampler;
 }
 
-Texture Texture::depth(int width, int height, int bits) {
-  Texture t = create(GL_TEXTURE_2D, width, height);
+namespace {
+// A depth map's storage for 16, 24 or 32 (float) bits: its internal format and the pixel type
+// glTexImage2D takes with it.
+struct DepthFormat {
+  GLint internal;
+  GLenum type;
+};
+DepthFormat depthFormat(int bits) {
   const GLenum internal = bits == 16   ? GL_DEPTH_COMPONENT16
                           : bits == 24 ? GL_DEPTH_COMPONENT24
                                        : GL_DEPTH_COMPONENT32F;
-  const GLenum type = bits == 32 ? GL_FLOAT : GL_UNSIGNED_INT;
-  glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internal), width, height, 0, GL_DEPTH_COMPONENT,
-               type, nullptr);
+  return {static_cast<GLint>(internal), bits == 32 ? GLenum{GL_FLOAT} : GLenum{GL_UNSIGNED_INT}};
+}
+}  // namespace
+
+Texture Texture::depth(int width, int height, int bits) {
+  Texture t = create(GL_TEXTURE_2D, width, height);
+  const DepthFormat format = depthFormat(bits);
+  glTexImage2D(GL_TEXTURE_2D, 0, format.internal, width, height, 0, GL_DEPTH_COMPONENT, format.type,
+               nullptr);
   // Outside the map counts as "nothing in front": depth 1 at the border.
   t.setWrap(GL_CLAMP_TO_BORDER, GL_CLAMP_TO_BORDER);
   t.setBorder(glm::vec4(1.0f));
@@ -75,13 +87,10 @@ void setSeamlessCubeFiltering([[maybe_unused]] bool on) {
 
 Texture Texture::depthCube(int size, int bits) {
   Texture t = create(GL_TEXTURE_CUBE_MAP, size, size);
-  const GLenum internal = bits == 16   ? GL_DEPTH_COMPONENT16
-                          : bits == 24 ? GL_DEPTH_COMPONENT24
-                                       : GL_DEPTH_COMPONENT32F;
-  const GLenum type = bits == 32 ? GL_FLOAT : GL_UNSIGNED_INT;
+  const DepthFormat format = depthFormat(bits);
   for (GLenum face = 0; face < 6; ++face) {
-    glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, static_cast<GLint>(internal), size, size,
-                 0, GL_DEPTH_COMPONENT, type, nullptr);
+    glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, format.internal, size, size, 0,
+                 GL_DEPTH_COMPONENT, format.type, nullptr);
   }
   // Every direction lands on some face: no border, and the edge texels are the face's own.
   t.setWrap(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
