@@ -258,7 +258,7 @@ inline void expectEveryMapInputRendersTheMapAgain(const std::string& lesson,
   EXPECT_EQ(runner->glErrors(), 0);
 }
 
-// Moving a caster must render the map again too (Runner::setObjectModel).
+// Moving a caster must render the map again too (SceneHost::setObjectModel).
 inline void expectACasterMoveRendersTheMapAgain(const std::string& lesson,
                                                 const std::vector<std::string>& start = {
                                                     "inset=false"}) {
@@ -270,7 +270,8 @@ inline void expectACasterMoveRendersTheMapAgain(const std::string& lesson,
     ++caster;
   }
   ASSERT_LT(caster, runner->scene().objects.size());
-  runner->setObjectModel(caster, glm::translate(runner->presetModel(caster), {0.7f, 0.3f, 0}));
+  runner->host().setObjectModel(
+      caster, glm::translate(runner->host().presetModel(caster), {0.7f, 0.3f, 0}));
   runner->renderFrame();
   EXPECT_EQ(runner->measure().lastFrameCounts().at("shadow_map_renders"), 1);
   const Image cached = runner->readImage();

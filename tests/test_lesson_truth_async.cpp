@@ -30,8 +30,8 @@ TEST(TruthOffTheRenderThread, FramesGoOnWhileItIsTracedAndTheResultIsTheBlocking
     runner->errors().begin();  // one job at a time: a second call changes nothing
     while (!runner->errors().poll()) runner->renderFrame();  // frames while it traces
     EXPECT_FALSE(runner->errors().truth().running());
-    ASSERT_TRUE(runner->lastError().valid) << lesson;
-    expectSameMetrics(runner->lastError().metrics, expected, lesson);
+    ASSERT_TRUE(runner->host().lastError().valid) << lesson;
+    expectSameMetrics(runner->host().lastError().metrics, expected, lesson);
     EXPECT_EQ(runner->glErrors(), 0) << lesson;
   }
 }

@@ -98,13 +98,13 @@ TruthInputs ErrorMeasure::gatherInputs() {
   glClearBufferfv(GL_COLOR, 1, clear_normal);
   glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   const Light light = r_.currentLight();
-  Frame frame(r_, r_.params_, r_.scene_, *r_.measure_, light);
+  Frame frame(r_.host_, r_.params_, r_.scene(), *r_.measure_, light);
   frame.eye = r_.params_.at("camera.pos").v();  // drawn in the order the lesson's eye pass was
   // The very camera the lesson drew with, or truth and picture would not line up.
   r_.gpu_->gbuffer.set("uViewProjection", r_.cameraProjection(w, h) * r_.cameraView());
   r_.gpu_->gbuffer.set("uHasLightFrustum", r_.told_.light_frustum ? 1 : 0);
   r_.gpu_->gbuffer.set("uLightViewProjection", r_.told_.light_frustum.value_or(glm::mat4(1.0f)));
-  r_.drawObjects(frame, r_.gpu_->gbuffer, Objects::All, nullptr);
+  frame.drawObjects(r_.gpu_->gbuffer, Objects::All, nullptr);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, job.surface.position.data());
   glReadBuffer(GL_COLOR_ATTACHMENT1);
@@ -112,8 +112,8 @@ TruthInputs ErrorMeasure::gatherInputs() {
 
   // The triangles always travel with the job (a tracer built for them is kept in truth_
   // while the scene stays): a job is whole wherever it is traced.
-  r_.scene_.worldTriangles(job.positions, job.triangles);
-  job.scene_radius = r_.scene_.bounds().radius();
+  r_.scene().worldTriangles(job.positions, job.triangles);
+  job.scene_radius = r_.scene().bounds().radius();
   in.truth = truth_.tracerFor(job);
   in.given = truth_.given;
   in.keep_bytes = !r_.options_.truth_job.empty() || !r_.options_.truth_result.empty();

@@ -116,10 +116,9 @@ void Runner::declareSharedInto(Params& params) {
 }
 
 void Runner::loadScene() {
-  scene_ = makeScene(params_.at("scene").choice());
-  preset_models_.clear();
-  for (const auto& object : scene_.objects) preset_models_.push_back(object.model);
-  const LightSetup& l = scene_.light;
+  host_.load(makeScene(params_.at("scene").choice()));
+  const Scene& scene = host_.scene();
+  const LightSetup& l = scene.light;
   // An omni light (11) has neither a type nor a target.
   if (Param* type = params_.find("light.type")) {
     params_.setDefaultChoice(*type, l.directional ? "directional" : "spot");
@@ -133,14 +132,14 @@ void Runner::loadScene() {
   for (const auto& [name, value] : frustum) {
     if (Param* p = params_.find(name)) params_.setDefaultFloat(*p, value);
   }
-  params_.setDefaultVec3(params_.at("camera.pos"), scene_.camera.position);
-  params_.setDefaultVec3(params_.at("camera.target"), scene_.camera.target);
-  params_.setDefaultFloat(params_.at("camera.fov"), scene_.camera.fov);
+  params_.setDefaultVec3(params_.at("camera.pos"), scene.camera.position);
+  params_.setDefaultVec3(params_.at("camera.target"), scene.camera.target);
+  params_.setDefaultFloat(params_.at("camera.fov"), scene.camera.fov);
   params_.consume(kDirtyScene);
   errors_.truth().forgetTracer();
   if (gpu_) {
     gpu_->meshes.clear();
-    for (const auto& object : scene_.objects) gpu_->meshes.emplace_back(object.mesh);
+    for (const auto& object : scene.objects) gpu_->meshes.emplace_back(object.mesh);
   }
 }
 
@@ -175,7 +174,7 @@ Light Runner::currentLight() const {
   const Param* target = p.find("light.target");
   l.directional = type != nullptr && type->is("directional");
   l.position = p.at("light.pos").v();
-  l.target = target != nullptr ? target->v() : scene_.light.target;
+  l.target = target != nullptr ? target->v() : scene().light.target;
   const glm::vec3 d = l.target - l.position;
   l.direction = glm::dot(d, d) > 1e-12f ? glm::normalize(d) : glm::vec3(0, -1, 0);
   // A lesson that does not offer a frustum slider gets the scene preset's value.
@@ -183,10 +182,10 @@ Light Runner::currentLight() const {
     const Param* param = p.find(name);
     return param != nullptr ? param->f() : preset;
   };
-  l.fov = value("light.fov", scene_.light.fov);
-  l.extent = value("light.extent", scene_.light.extent);
-  l.near = value("light.near", scene_.light.near);
-  l.far = value("light.far", scene_.light.far);
+  l.fov = value("light.fov", scene().light.fov);
+  l.extent = value("light.extent", scene().light.extent);
+  l.near = value("light.near", scene().light.near);
+  l.far = value("light.far", scene().light.far);
   l.view = lookAtSafe(l.position, l.target);
   return l;
 }
@@ -194,7 +193,7 @@ Light Runner::currentLight() const {
 std::string Runner::lightOnSurface() const {
   const Light l = currentLight();
   if (l.directional) return {};
-  return scene_.surfaceAt(l.position, 1e-5f * std::max(scene_.bounds().radius(), 1.0f));
+  return scene().surfaceAt(l.position, 1e-5f * std::max(scene().bounds().radius(), 1.0f));
 }
 
 void Runner::initHeadless() {
@@ -245,7 +244,7 @@ void Runner::initGl() {
   gpu_->texel_raw =
       Program(dir / "shadow_coord.vert", dir / "texel_density.frag", {"TEXEL_HEATMAP 0"});
   glGenVertexArrays(1, &gpu_->empty_vao);
-  for (const auto& object : scene_.objects) gpu_->meshes.emplace_back(object.mesh);
+  for (const auto& object : scene().objects) gpu_->meshes.emplace_back(object.mesh);
   gpu_->ensureTargets(options_.width, options_.height);
   lesson_->init();
 }
@@ -273,7 +272,7 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
   measure_->setEnabled(timed);
   if (params_.consume(kDirtyScene)) loadScene();
   Light light;
-  Frame frame(*this, params_, scene_, *measure_, light);
+  Frame frame(host_, params_, host_.scene(), *measure_, light);
   // The light and camera as the parameters say now; again after the panel, whose widgets
   // may move them this very frame (the lesson must draw with what its map is built for).
   const auto readParams = [&] {
@@ -371,8 +370,8 @@ glm::mat4 Runner::cameraView() const {
 
 glm::mat4 Runner::cameraProjection(int width, int height) const {
   const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
-  return glm::perspective(glm::radians(params_.at("camera.fov").f()), aspect, scene_.camera.near,
-                          scene_.eyeFar(params_.at("camera.pos").v()));
+  return glm::perspective(glm::radians(params_.at("camera.fov").f()), aspect, scene().camera.near,
+                          scene().eyeFar(params_.at("camera.pos").v()));
 }
 
 void Runner::showImage(const Frame& frame, const Image& image) {
@@ -384,7 +383,7 @@ void Runner::showImage(const Frame& frame, const Image& image) {
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
                   image.rgba.data());
-  drawImageInset(frame, gpu_->shown, /*fullscreen=*/true);
+  frame.drawImageInset(gpu_->shown, /*fullscreen=*/true);
 }
 
 void Runner::resetGlState() {

@@ -15,6 +15,7 @@
 #include "run/error_measure.hpp"
 #include "run/exercise_run.hpp"
 #include "run/headless_run.hpp"
+#include "run/scene_host.hpp"
 #include "run/side_passes.hpp"
 #include "run/truth_measure.hpp"
 #include "run/window.hpp"
@@ -52,7 +53,15 @@ struct RunOptions {
 // Parses argv. Returns "" or one line naming what is wrong (the caller exits 2).
 std::string parseCommandLine(int argc, char** argv, RunOptions& options);
 
-class Runner final : public LessonHost {
+// What a lesson's last frame told the runner (Frame's outputs).
+struct FrameOutputs {
+  std::optional<glm::mat4> light_frustum;
+  float truth_area_radius = 0.0f;
+  std::optional<AirMedium> medium;
+  std::optional<ShadowSampling> shadow_sampling;
+};
+
+class Runner final {
  public:
   Runner(const std::string& lessonName, std::unique_ptr<Lesson> lesson, RunOptions options);
   ~Runner();
@@ -76,7 +85,6 @@ class Runner final : public LessonHost {
   const ErrorState& measureError() { return errors_.measure(); }
   ErrorMeasure& errors() { return errors_; }
   const ErrorMeasure& errors() const { return errors_; }
-  const ErrorState& lastError() const override { return errors_.truth().error(); }
   Image readImage() const;
   std::vector<float> renderVisibility();
   // Renders `mode` into the float target and returns its red channel (visibility, air).
@@ -85,7 +93,9 @@ class Runner final : public LessonHost {
   Params& params() { return params_; }
   Measure& measure() { return *measure_; }
   Lesson& lesson() { return *lesson_; }
-  const Scene& scene() const { return scene_; }
+  const Scene& scene() const { return host_.scene(); }
+  // What a lesson may ask of the runner (LessonHost), and what its Frames draw through.
+  SceneHost& host() { return host_; }
   const std::string& lessonName() const { return name_; }
   const RunOptions& options() const { return options_; }
   int glErrors() const;
@@ -104,20 +114,7 @@ class Runner final : public LessonHost {
   // The window: its loop in steps (a page's), the panel's column, a test's panel sections.
   RunnerWindow& window() { return window_; }
 
-  // LessonHost: what a lesson may ask (lesson/lesson.hpp says what each does).
-  void setObjectModel(size_t index, const glm::mat4& model) override;
-  const glm::mat4& presetModel(size_t index) const override { return preset_models_.at(index); }
-
  private:
-  // What a Frame draws with (LessonHost): the scene's meshes and the runner's inset programs.
-  void drawObjects(const Frame& frame, const Program& program, Objects which,
-                   const glm::mat4* cull) const override;
-  void drawObject(const Program& program, size_t index) const override;
-  void drawInset(const Frame& frame, const Texture& depth, float near, float far, bool perspective,
-                 bool fullscreen) const override;
-  void drawImageInset(const Frame& frame, const Texture& image, bool fullscreen) const override;
-  void drawFullscreen(const Frame& frame, const Program& program, bool inset) const override;
-
   struct Gpu;
   void declareShared();
   static void declareSharedInto(Params& params);
@@ -142,19 +139,13 @@ class Runner final : public LessonHost {
   std::unique_ptr<Lesson> lesson_;
   RunOptions options_;
   Params params_;
-  Scene scene_;
-  std::vector<glm::mat4> preset_models_;
   std::unique_ptr<Measure> measure_;
   void initImGuiGl();  // the ImGui GL backend (both window and headless)
   long long compiled_at_start_ = ProgramVariants::compiledTotal();
   std::unique_ptr<Gpu> gpu_;
-  // What the lesson's last frame told the runner (Frame's outputs).
-  struct FrameOutputs {
-    std::optional<glm::mat4> light_frustum;
-    float truth_area_radius = 0.0f;
-    std::optional<AirMedium> medium;
-    std::optional<ShadowSampling> shadow_sampling;
-  } told_;
+  FrameOutputs told_;  // what the lesson's last frame told the runner
+  friend class SceneHost;
+  SceneHost host_{*this};
   friend class BaselineFrames;
   BaselineFrames baseline_{*this};
   friend class TexelPass;

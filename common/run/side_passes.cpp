@@ -25,7 +25,7 @@ void BaselineFrames::render() {
     BaselineFrames& b;
     Param& off;
     std::uint32_t dirty;
-    Runner::FrameOutputs told;
+    FrameOutputs told;
     ~Restore() {
       off.value[0] = 0.0;
       std::swap(b.r_.measure_, b.measure_);
@@ -96,7 +96,7 @@ void TexelPass::draw(const Frame& frame, bool heatmap) const {
   p.set("uMapSize", glm::vec2(map.map_size));
   p.set("uTolerance", kTexelTolerance);
   frame.setLightingUniforms(p, 0.0f);
-  r_.drawObjects(frame, p, Objects::All, nullptr);
+  frame.drawObjects(p, Objects::All, nullptr);
   Runner::resetGlState();
 }
 
