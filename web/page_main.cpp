@@ -41,7 +41,7 @@ std::string errorSummary() {
                   100.0 * g_runner->errors().progress());
     return line;
   }
-  const shadows::ErrorState& error = g_runner->lastError();
+  const shadows::ErrorState& error = g_runner->host().lastError();
   if (g_runner->errors().truth().failed())
     return "the ray tracer failed: the browser's console says why";
   if (!error.valid) return "";
