@@ -72,10 +72,14 @@ struct Result {
   std::map<std::string, long long> counts;
   ErrorMetrics error;
   bool error_valid = false;
-  std::optional<double> undersampled_pct;  // lessons with a map (texel_density.hpp)
+  std::optional<double> undersampled_pct;        // lessons with a map (texel_density.hpp)
+  std::map<std::string, double> report_numbers;  // Sweep::report_numbers, from the report
   int gl_errors = 0;
   std::string renderer;
 };
+
+// The number `name` at the top level of a report JsonWriter wrote, or none (tables.cpp).
+std::optional<double> topLevelNumber(const std::string& json, const std::string& name);
 
 // ---- configs.cpp, studies.cpp
 

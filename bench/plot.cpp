@@ -240,7 +240,8 @@ const std::map<std::string, std::string>& metricTitles() {
       {"shade_mae", "shade_mae: mean |vis - truth| x N.L"},
       {"air_rel_rmse_pct", "air light: relative RMSE, %"},
       {"air_mae", "air light: mean |rendered - truth|"},
-      {"undersampled_pct", "under-sampled: % of pixels, < 1 texel along an axis"}};
+      {"undersampled_pct", "under-sampled: % of pixels, < 1 texel along an axis"},
+      {"shimmer_pct", "shimmer: % of sunlit pixels flipping a step (12)"}};
   return titles;
 }
 

@@ -3,9 +3,13 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
+#include <optional>
+#include <stdexcept>
 
 #include "bench.hpp"
+#include "core/json.hpp"
 
 namespace shadows::bench {
 
@@ -51,6 +55,16 @@ void Bench::run(benchmark::State& state, size_t index) {
       result.error_valid = e.valid;
       if (const auto* texels = r.texels().measure()) {
         result.undersampled_pct = texelStats(*texels).undersampled_pct;
+      }
+      const std::vector<std::string>& numbers = allSweeps().at(c.sweep).report_numbers;
+      if (!numbers.empty()) {
+        JsonWriter json;
+        r.writeReport(json);
+        for (const std::string& name : numbers) {
+          const std::optional<double> v = topLevelNumber(json.str(), name);
+          if (!v) throw std::runtime_error("the report has no number " + name);
+          result.report_numbers[name] = *v;
+        }
       }
     }
     result.gl_errors += r.glErrors() - errors_before;

@@ -30,6 +30,7 @@ TEST(Table, EveryColumnHoldsTheFieldItsHeaderNames) {
   r.error.air.mae = 0.5, r.error.air.rel_rmse = 0.75, r.error.air.truth_noise = 0.0078125;
   r.error.truth = "area r=0.25 n=64";
   r.undersampled_pct = 66.5;
+  r.report_numbers = {{"shimmer_pct", 0.046875}};
   r.gl_errors = 1;
   r.renderer = "llvmpipe";
   Options o;
@@ -69,6 +70,7 @@ TEST(Table, EveryColumnHoldsTheFieldItsHeaderNames) {
       {"air_rel_rmse", "0.75"},
       {"air_truth_noise", "0.0078125"},
       {"undersampled_pct", "66.5"},
+      {"shimmer_pct", "0.046875"},
       {"truth", "area r=0.25 n=64"},
       {"gl_errors", "1"},
       {"renderer", "llvmpipe"},
@@ -106,6 +108,15 @@ TEST(Table, AFieldNotMeasuredIsAnEmptyCellNotAZero) {
   }
   EXPECT_EQ(t.cell(0, "draw_calls.volumes"), "3");
   EXPECT_EQ(t.cell(0, "status"), "failed: timed out");
+}
+
+TEST(Table, AReportNumberIsReadFromTheTopLevelOnly) {
+  const std::string json =
+      "{\n  \"a\": {\"shimmer_pct\": 9},\n  \"note\": \"\\\"shimmer_pct\\\": 8\",\n"
+      "  \"shimmer_pct\": 0.25,\n  \"x\": [1, 2]\n}";
+  EXPECT_EQ(topLevelNumber(json, "shimmer_pct"), 0.25);
+  EXPECT_EQ(topLevelNumber(json, "missing"), std::nullopt);
+  EXPECT_EQ(topLevelNumber("{\"a\": {\"b\": 1}}", "b"), std::nullopt);
 }
 
 }  // namespace

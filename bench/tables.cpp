@@ -12,6 +12,39 @@
 #include "core/json.hpp"
 
 namespace shadows::bench {
+
+std::optional<double> topLevelNumber(const std::string& json, const std::string& name) {
+  // A key of the top level is a string at depth 1 followed by a colon (JsonWriter writes
+  // "name": value); strings are skipped whole, escapes included.
+  std::string key = "\"";
+  key += name;
+  key += "\":";
+  int depth = 0;
+  bool in_string = false;
+  for (size_t i = 0; i < json.size(); ++i) {
+    const char ch = json[i];
+    if (in_string) {
+      if (ch == '\\')
+        ++i;
+      else if (ch == '"')
+        in_string = false;
+      continue;
+    }
+    if (ch == '{' || ch == '[') ++depth;
+    if (ch == '}' || ch == ']') --depth;
+    if (ch != '"') continue;
+    if (depth == 1 && json.compare(i, key.size(), key) == 0) {
+      const char* start = json.c_str() + i + key.size();
+      char* end = nullptr;
+      const double v = std::strtod(start, &end);
+      if (end != start) return v;
+      return std::nullopt;
+    }
+    in_string = true;
+  }
+  return std::nullopt;
+}
+
 namespace {
 
 // The CPU the times were taken on, for the plot's title: "2 cores, Intel(R) Xeon(R) ...".
@@ -44,11 +77,12 @@ std::string number(double v) {
 // columns.
 Table makeTable(const std::vector<const Config*>& configs,
                 const std::vector<const Result*>& results, const Options& o) {
-  std::set<std::string> passes, counts;
+  std::set<std::string> passes, counts, report_numbers;
   for (const Result* r : results) {
     for (const auto& [p, ms] : r->pass_ms) passes.insert(p);
     for (const auto& [p, w] : r->work) passes.insert(p);
     for (const auto& [name, n] : r->counts) counts.insert(name);
+    for (const auto& [name, v] : r->report_numbers) report_numbers.insert(name);
   }
   Table t;
   auto column = [&](const std::string& name, bool numeric) {
@@ -85,6 +119,7 @@ Table makeTable(const std::vector<const Config*>& configs,
         "counted_pixels", "air_mae", "air_rel_rmse", "air_truth_noise", "undersampled_pct"}) {
     column(name, true);
   }
+  for (const auto& name : report_numbers) column(name, true);
   column("truth", false);
   column("gl_errors", true);
   column("renderer", false);
@@ -131,6 +166,10 @@ Table makeTable(const std::vector<const Config*>& configs,
     row.push_back(air ? number(r.error.air.rel_rmse) : "");
     row.push_back(air ? number(r.error.air.truth_noise) : "");
     row.push_back(r.undersampled_pct ? number(*r.undersampled_pct) : "");
+    for (const auto& name : report_numbers) {
+      const auto it = r.report_numbers.find(name);
+      row.push_back(it == r.report_numbers.end() ? "" : number(it->second));
+    }
     row.push_back(e ? r.error.truth : "");
     row.push_back(std::to_string(r.gl_errors));
     row.push_back(r.renderer);

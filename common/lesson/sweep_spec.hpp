@@ -50,6 +50,9 @@ struct Sweep {
   // Also plot against axes[0]'s (numeric) value (<name>_along.png), for knobs that cost nothing
   // (a bias): there the question is how error moves with the knob.
   bool plot_along = false;
+  // Numbers of the lesson's own report (top-level fields) written as columns of their own,
+  // which plot_metrics may then name: lesson 12's shimmer_pct.
+  std::vector<std::string> report_numbers{};
   // A study across lessons: its name is no lesson, and its bundles say `lesson=NAME`.
   bool study = false;
 };
