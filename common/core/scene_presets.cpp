@@ -1,7 +1,7 @@
 // The scene presets: the shared ones every map lesson offers (torus_pyramid, grazing, dueling,
 // cubes) and the ones a lesson makes its own case with (room for 08, eye_in_shadow and fence
-// for 09, strategy and receding for 10, bulb for 11, stacked for 13, contact and overlap for 14).
-// The meshes and the scene's queries are in scene.cpp.
+// for 09, strategy and receding for 10, bulb for 11, street for 12, stacked for 13, contact and
+// overlap for 14). The meshes and the scene's queries are in scene.cpp.
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -221,6 +221,38 @@ Scene receding() {
   return s;
 }
 
+// Lesson 12's street (seed 003, perspective aliasing): the sun over a scene 200 units deep,
+// the eye at head height looking along it. Posts every 6 units on both kerbs, a low wall
+// beside the left one and a few crates on the road: near shadows a step away, far ones
+// many pixels thin.
+Scene street() {
+  Scene s;
+  s.objects.push_back(
+      receiverPlane("road", 14.0f, 110.0f, translate({0, 0, -96}), {0.62f, 0.62f, 0.6f}));
+  for (int i = 0; i < 34; ++i) {
+    const float z = 2.0f - 6.0f * static_cast<float>(i);
+    for (const float x : {-4.0f, 4.0f}) {
+      s.objects.push_back(
+          {"post", makeBox({0.15f, 1.5f, 0.15f}), translate({x, 1.5f, z}), {0.3f, 0.55f, 0.85f}});
+    }
+  }
+  for (int i = 0; i < 10; ++i) {
+    s.objects.push_back({"wall",
+                         makeBox({0.25f, 0.6f, 9.0f}),
+                         translate({-7.0f, 0.6f, -6.0f - 20.0f * static_cast<float>(i)}),
+                         {0.7f, 0.5f, 0.4f}});
+  }
+  for (const glm::vec3 at : {glm::vec3(1.2f, 0.5f, -9.0f), glm::vec3(-1.5f, 0.5f, -31.0f),
+                             glm::vec3(0.8f, 0.5f, -70.0f)}) {
+    s.objects.push_back({"crate", makeBox(glm::vec3(0.5f)), translate(at), {0.8f, 0.62f, 0.3f}});
+  }
+  // The sun: only its direction matters; extent, near and far are a box around the whole
+  // street for the lessons that fit one map to it.
+  s.light = {true, {30.0f, 45.0f, -16.5f}, {0.0f, 0.0f, -50.0f}, 60.0f, 120.0f, 1.0f, 300.0f};
+  s.camera = {{0.0f, 1.7f, 8.0f}, {0.0f, 1.2f, -30.0f}, 50.0f, 0.1f, 250.0f};
+  return s;
+}
+
 }  // namespace
 
 Scene makeScene(const std::string& preset) {
@@ -329,6 +361,12 @@ Scene makeScene(const std::string& preset) {
     s.camera = {{4.6f, 2.4f, 2.6f}, {1.9f, 0.1f, -0.5f}, 45.0f, 0.1f, 100.0f};
   } else if (preset == "bulb") {
     s = bulb();
+  } else if (preset == "street") {
+    s = street();
+  } else if (preset == "street_low_sun") {
+    // Late afternoon, the sun 10° high: shadows five times their posts' height.
+    s = street();
+    s.light.position = {30.0f, 7.9f, -16.5f};
   } else if (preset == "room") {
     s = room();
   } else if (preset == "strategy") {

@@ -60,6 +60,11 @@ const kRoundingViews = {
   // llvmpipe take those differences differently across a 2x2 quad, most of all along the
   // faces' seams and silhouettes (measured: 168 pixels moved, mean 0.30).
   '11_omni_cube': ['face_texels'],
+  // 12's street converges on the horizon: dozens of posts a few pixels wide and their shadows
+  // one pixel thin, whose coverage the two rasterizers round differently (measured: shaded
+  // 154 pixels moved, mean 0.10; visibility 168, 0.15; cascades 155, 0.10; texel_grid 156,
+  // 0.10, its checker faded by dFdx/dFdy where a pixel spans a texel).
+  '12_cascades': ['shaded', 'visibility', 'cascades', 'texel_grid'],
 };
 const kRoundingMoved8Fraction = 0.03, kRoundingMeanLevels = 3.5;
 // "" when `web` is within that tolerance of `native`, else what is off.

@@ -1,0 +1,432 @@
+// Lesson 12: cascaded shadow maps for the sun (seed 003, "Problem: Aliasing Artifacts",
+// perspective aliasing; seed 002: "not allocating enough shadow map samples to regions that
+// matter to the viewer").
+//
+//   One map over a street 200 units deep gives the metre at the eye's feet as few texels as
+//   the metre at the horizon, though it covers a thousand times the pixels. Cut the eye's
+//   frustum into slices along its depth and give each slice a map of its own:
+//   Pass 1, once a cascade: the casters through an orthographic box around its slice, into
+//           its tile of one atlas (culled per cascade).
+//   Pass 2: from the eye. The fragment's view depth picks the cascade (and, in a band before
+//           its far end, blends with the next), then Williams' comparison in that tile.
+//   Lesson 10's focusing is the one-cascade case: one box around the whole visible slice.
+//
+// Shimmer, measured: the eye steps along a short path; the points of the world this frame
+// shows keep their shadow in the truth (the sun and the scene stand still), so every flip of
+// one between two steps is the map's doing. Snapped, sphere-bounded boxes move by whole
+// texels and never change size: their texels stay put on the ground and nothing flips.
+#include <imgui.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+
+#include "cascade_math.hpp"
+#include "core/json.hpp"
+#include "lesson/lesson.hpp"
+
+namespace shadows {
+
+namespace {
+constexpr int kMaxCascades = 4;
+constexpr int kShimmerSteps = 8;  // the path: eight steps of 3 cm and 0.1°
+enum class Fit { Slice, Sphere };
+enum class Path { Walk, Turn, Both };
+const std::array<glm::vec3, kMaxCascades> kCascadeColors = {
+    glm::vec3(0.95f, 0.35f, 0.3f), glm::vec3(0.35f, 0.85f, 0.35f), glm::vec3(0.35f, 0.5f, 0.95f),
+    glm::vec3(0.95f, 0.8f, 0.25f)};
+}  // namespace
+
+class Cascades final : public Lesson {
+ public:
+  std::string title() const override { return "Cascaded shadow maps for the sun, and shimmer"; }
+  std::string seeds() const override {
+    return "seed 003: Problem: Aliasing Artifacts (perspective aliasing); seed 002: allocate "
+           "shadow map samples to regions that matter to the viewer";
+  }
+  std::vector<std::string> debugViews() const override {
+    return {"cascades", "maps", "texel_grid"};
+  }
+  std::vector<std::string> scenes() const override {
+    return {"street", "street_low_sun", "receding", "torus_pyramid"};
+  }
+  // The sun's box is the cascades' own: the shared frustum settings do nothing here.
+  std::vector<std::string> unusedSharedParams() const override {
+    return {"light.fov", "light.extent", "light.near", "light.far"};
+  }
+
+  void declare(Params& p) override {
+    constexpr auto kMap = kDirtyShadowMap | kDirtyResources;
+    count_ = p.addInt("cascades.count", 4, 1, kMaxCascades,
+                      "slices of the eye's frustum, one map each (1: lesson 10's focusing)", kMap);
+    split_ = p.addChoice("cascades.split", {"uniform", "logarithmic", "practical"}, "practical",
+                         "where the slices end: even, in a geometric series, or a blend of both",
+                         kDirtyShadowMap);
+    lambda_ = p.addFloat("cascades.lambda", 0.75f, 0.0f, 1.0f,
+                         "practical split: the logarithmic one's weight (1: logarithmic)",
+                         kDirtyShadowMap);
+    lambda_.param().inactive = [](const Params& ps) -> std::string {
+      return ps.at("cascades.split").is("practical") ? "" : "only the practical split has it";
+    };
+    fit_ = p.addChoice("cascades.fit", {"slice", "sphere"}, "sphere",
+                       "each map's box: the slice's own extent (tight, changes size as the eye "
+                       "turns) or a square around its bounding sphere (fixed size)",
+                       kDirtyShadowMap);
+    snap_ = p.addBool("cascades.snap", true, "move each box by whole texels only", kDirtyShadowMap);
+    blend_ = p.addFloat("cascades.blend", 0.1f, 0.0f, 0.5f,
+                        "the share of a slice, at its far end, blended with the next cascade");
+    size_ = p.addInt("cascades.size", 1024, 64, 2048, "texels along each cascade's side", kMap)
+                .logScale();
+    far_ = p.addFloat("cascades.far", 120.0f, 5.0f, 400.0f,
+                      "shadow distance: where the last slice ends (beyond: no shadow)",
+                      kDirtyShadowMap)
+               .logScale();
+    filter_ = p.addChoice("cascades.filter", {"nearest", "linear"}, "linear",
+                          "linear: the hardware's 2x2 compare, blended (bilinear PCF)");
+    normal_ = p.addFloat("bias.normal", 1.0f, 0.0f, 4.0f,
+                         "normal offset in texels of the fragment's cascade: it scales with each "
+                         "cascade's texels");
+    depth_bias_ = p.addFloat("bias.depth", 1.0f, 0.0f, 8.0f,
+                             "constant depth bias, in texels of the fragment's cascade");
+    path_ = p.addChoice("shimmer.path", {"walk", "turn", "both"}, "both",
+                        "the eye's steps the shimmer is measured over: 3 cm forward and "
+                        "sideways, 0.1° of turn, or both");
+    dimming_ = p.addFloat("dimming", 0.4f, 0.0f, 1.0f,
+                          "light left in shadow: dimming + (1-dimming)*shade");
+    {
+      const Params::SharedScope shared(p);
+      cache_ = p.addBool("shadow.cache", true,
+                         "re-render the maps only when the eye, the sun or a caster changed",
+                         kDirtyShadowMap);
+      off_ = p.addBool("shadow.off", false,
+                       "baseline: the same frame with no shadow work (no maps, no lookup)",
+                       kDirtyShadowMap);
+    }
+  }
+
+  void init() override {
+    depth_programs_ = ProgramVariants(commonShaderDir() / "light_depth.vert",
+                                      commonShaderDir() / "depth_only.frag");
+    eye_programs_ = ProgramVariants(commonShaderDir() / "shadow_coord.vert",
+                                    lessonFile(LESSON_DIR, "scene.frag"));
+    compare_nearest_ = Sampler::depth(/*compare=*/true, GL_NEAREST);
+    compare_linear_ = Sampler::depth(/*compare=*/true, GL_LINEAR);
+  }
+
+  void render(Frame& f) override {
+    if (off_()) {
+      f.measure.count("shadow_map_renders", 0);
+      f.measure.count("cascade_renders", 0);
+    } else {
+      ensureAtlas();
+      const std::string key = shimmerKey(f);
+      // Eight steps of maps and lookups: measured once the input rests, as the truth is.
+      if (key != shimmer_key_ && !f.input_moving) {
+        measureShimmer(f);
+        shimmer_key_ = key;
+        f.params.markDirty(kDirtyShadowMap);  // the atlas holds the path's last step
+      }
+      const bool moved = f.view != atlas_view_ || f.projection != atlas_projection_;
+      const bool stale = f.params.consume(kDirtyShadowMap) || !cache_() || moved;
+      if (stale) {
+        auto timing = f.measure.pass("shadow");
+        renderAtlas(f, f.view, /*counted=*/true);
+      }
+      f.measure.count("shadow_map_renders", stale ? 1 : 0);
+      if (!stale) f.measure.count("cascade_renders", 0);
+    }
+
+    auto timing = f.measure.pass("eye", /*countPassed=*/true);
+    f.clearTarget();
+    if (f.mode == "maps" && !off_()) {
+      f.drawDepthInset(atlas_, 0.0f, 1.0f, /*perspective=*/false, /*fullscreen=*/true);
+      return;
+    }
+    const Program& e = eyeProgram(f.viewDefines());
+    setEyeUniforms(e, f, f.view);
+    e.set("uViewProjection", f.projection * f.view);
+    f.drawObjects(e, Objects::All);
+    Sampler::unbind(0);
+  }
+
+  // The error slice by slice (report: error.cascade_1 ...): pixels whose view depth falls in it.
+  std::vector<ErrorRegion> errorRegions() const override {
+    std::vector<ErrorRegion> regions;
+    const glm::mat4 view = atlas_view_;
+    for (int i = 0; i < kMaxCascades; ++i) {
+      const float d0 = i < used_count_ ? splits_[static_cast<size_t>(i)] : 0.0f;
+      const float d1 = i < used_count_ ? splits_[static_cast<size_t>(i) + 1] : 0.0f;
+      regions.push_back({"cascade_" + std::to_string(i + 1), [view, d0, d1](glm::vec4 p) {
+                           const float depth = -(view * glm::vec4(glm::vec3(p), 1.0f)).z;
+                           return depth > d0 && depth <= d1;
+                         }});
+    }
+    return regions;
+  }
+
+  void report(JsonWriter& json) const override {
+    json.value("cascade_count", used_count_);
+    json.value("cascade_split", split_.name());
+    json.value("cascade_fit", fit_.name());
+    json.value("cascade_snap", snap_());
+    json.value("shadow_distance", far_());
+    json.beginArray("cascade_splits");
+    for (int i = 0; i <= used_count_; ++i) json.value("", splits_[static_cast<size_t>(i)]);
+    json.endArray();
+    // One texel's side on the ground facing the sun, cascade by cascade: what each slice gets.
+    json.beginArray("cascade_texel_world");
+    for (int i = 0; i < used_count_; ++i) {
+      json.value("", fits_[static_cast<size_t>(i)].texel_world);
+    }
+    json.endArray();
+    json.value("atlas_bytes", static_cast<long long>(atlas_.width()) * atlas_.height() * 4);
+    json.value("shimmer_path", path_.name());
+    json.value("shimmer_steps", kShimmerSteps);
+    json.value("shimmer_pct", off_() ? 0.0 : shimmer_pct_);
+    json.value("shimmer_pixels", off_() ? 0LL : shimmer_counted_);
+  }
+
+  void panel(Frame&) override {
+    ImGui::TextWrapped(
+        "shimmer: %.4f %% of the sunlit pixels flip between two steps of the "
+        "eye (the truth: none)",
+        shimmer_pct_);
+    std::string slices;
+    for (int i = 0; i < used_count_; ++i) {
+      char line[96];
+      std::snprintf(line, sizeof line, "%s%.1f-%.1f m: %.1f cm a texel", i ? "; " : "",
+                    splits_[static_cast<size_t>(i)], splits_[static_cast<size_t>(i) + 1],
+                    100.0f * fits_[static_cast<size_t>(i)].texel_world);
+      slices += line;
+    }
+    ImGui::TextWrapped("cascades: %s", slices.c_str());
+  }
+
+  // docs/EXERCISES.md has the intended solutions.
+  std::vector<Exercise> exercises() const override {
+    using B = Figure::Bound;
+    return {{.title = "Stop the crawl",
+             .goal = "Boxes fitted to their slices and moved freely make the shadows' edges "
+                     "crawl: 0.058 % of the sunlit pixels flip at each step of the eye's walk "
+                     "and turn, where the truth flips none. Bring the shimmer to 0.01 % or less "
+                     "with the same texels, false shadow and false lit at most 0.2 % each.",
+             .setup = {"cascades.fit=slice", "cascades.snap=false"},
+             .allowed = {"cascades.fit", "cascades.snap", "cascades.blend", "bias.normal",
+                         "bias.depth"},
+             .figures = {{"/shimmer_pct", "shimmer %", B::AtMost, 0.01},
+                         {"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.2},
+                         {"/error/false_lit_pct", "false lit %", B::AtMost, 0.2}},
+             .hint = "What changes a box's size as the eye turns, and where can it move to?"},
+            {.title = "Where the texels go",
+             .goal = "Two cascades of 256 texels split evenly give the slice at the eye's feet "
+                     "60 metres, 43 cm a texel: 0.39 % false shadow and 0.66 % false lit. With "
+                     "the same two maps, bring each to 0.3 % or less.",
+             .setup = {"cascades.count=2", "cascades.size=256", "cascades.split=uniform"},
+             .allowed = {"cascades.split", "cascades.lambda", "cascades.far", "bias.normal",
+                         "bias.depth"},
+             .figures = {{"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.3},
+                         {"/error/false_lit_pct", "false lit %", B::AtMost, 0.3}},
+             .hint = "Texels per metre should fall with distance as the eye's pixels per metre "
+                     "do."}};
+  }
+
+ private:
+  void ensureAtlas() {
+    const int n = count_(), size = size_();
+    const int cols = n == 1 ? 1 : 2, rows = n <= 2 ? 1 : 2;
+    if (atlas_.width() == cols * size && atlas_.height() == rows * size && cols_ == cols) return;
+    atlas_ = Texture::depth(cols * size, rows * size, 24);
+    framebuffer_ = std::make_unique<Framebuffer>();
+    framebuffer_->attachDepth(atlas_);
+    framebuffer_->check();
+    cols_ = cols, rows_ = rows;
+    atlas_view_ = glm::mat4(0.0f);  // nothing in it yet
+  }
+
+  // The slices for the eye `view`, their boxes, and the casters of each into its tile.
+  void renderAtlas(Frame& f, const glm::mat4& view, bool counted) {
+    used_count_ = count_();
+    const float near = f.scene.camera.near;
+    const float far = std::max(far_(), near * 2.0f);
+    const float lambda = lambda_();
+    for (int i = 0; i <= used_count_; ++i) {
+      splits_[static_cast<size_t>(i)] =
+          cascade::splitDistance(split_(), i, used_count_, near, far, lambda);
+    }
+    const glm::mat4 light = cascade::lightRotation(f.light.direction);
+    const Bounds scene = f.scene.bounds();
+    const float fov = glm::radians(f.params.at("camera.fov").f());
+    const float aspect = static_cast<float>(f.width) / static_cast<float>(std::max(f.height, 1));
+    framebuffer_->bind();
+    PassState{}.apply();
+    glViewport(0, 0, atlas_.width(), atlas_.height());
+    glClearDepthf(1.0f);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    const Program& d = depth_programs_.get({});
+    for (int i = 0; i < used_count_; ++i) {
+      const auto k = static_cast<size_t>(i);
+      const auto corners = cascade::sliceCorners(view, fov, aspect, splits_[k], splits_[k + 1]);
+      fits_[k] = cascade::fitCascade(corners, light, size_(), fit_() == Fit::Sphere, snap_(),
+                                     scene.center(), scene.radius());
+      glViewport((i % cols_) * size_(), (i / cols_) * size_(), size_(), size_());
+      d.set("uLightViewProjection", fits_[k].view_projection);
+      f.drawObjects(d, Objects::Casters, &fits_[k].view_projection);
+    }
+    PassState{}.apply();
+    atlas_view_ = view;
+    atlas_projection_ = f.projection;
+    if (counted) f.measure.count("cascade_renders", used_count_);
+  }
+
+  const Program& eyeProgram(const std::vector<std::string>& view) {
+    return eye_programs_.get({view, define("SHADOW_OFF", off_())});
+  }
+
+  // What the lookup needs: each cascade's matrix into its tile, the slices, the biases.
+  void setEyeUniforms(const Program& e, Frame& f, const glm::mat4& cascadeView) const {
+    atlas_.bind(0);
+    (filter_.name() == "linear" ? compare_linear_ : compare_nearest_).bind(0);
+    e.set("uAtlas", 0);
+    e.set("uShadowMatrix", glm::mat4(1.0f));
+    e.set("uCount", off_() ? 0 : used_count_);
+    e.set("uCascadeView", cascadeView);
+    const glm::vec2 tile(1.0f / static_cast<float>(cols_), 1.0f / static_cast<float>(rows_));
+    const glm::vec2 half_texel(0.5f / static_cast<float>(std::max(atlas_.width(), 1)),
+                               0.5f / static_cast<float>(std::max(atlas_.height(), 1)));
+    for (int i = 0; i < kMaxCascades; ++i) {
+      const auto k = static_cast<size_t>(i);
+      char index[8];
+      std::snprintf(index, sizeof index, "[%d]", i);
+      const std::string at = index;
+      const glm::vec2 offset(static_cast<float>(i % cols_) * tile.x,
+                             static_cast<float>(i / cols_) * tile.y);
+      e.set("uCascade" + at, fits_[k].view_projection);
+      e.set("uTileOffset" + at, offset);
+      e.set("uTile" + at, glm::vec4(offset + half_texel, offset + tile - half_texel));
+      e.set("uTexelWorld" + at, fits_[k].texel_world);
+      e.set("uDepthRange" + at, fits_[k].depth_range);
+      e.set("uSplitFar" + at, splits_[k + 1]);
+      e.set("uSplitNear" + at, splits_[k]);
+      e.set("uCascadeColor" + at, kCascadeColors[k]);
+    }
+    e.set("uTileScale", tile);
+    e.set("uSize", static_cast<float>(size_()));
+    e.set("uBiasNormal", normal_());
+    e.set("uBiasDepth", depth_bias_());
+    e.set("uBlend", used_count_ > 1 ? blend_() : 0.0f);
+    f.setLightingUniforms(e, dimming_());
+  }
+
+  // The eye's k-th step along the path: forward and sideways by 3 cm a step, turned by 0.1°.
+  glm::mat4 stepView(const glm::mat4& view, int k) const {
+    const float s = static_cast<float>(k);
+    const bool walk = path_() != Path::Turn, turn = path_() != Path::Walk;
+    glm::mat4 v = view;
+    if (walk) v = v * glm::translate(glm::mat4(1.0f), -s * glm::vec3(0.013f, 0.0f, -0.027f));
+    if (turn) v = glm::rotate(glm::mat4(1.0f), glm::radians(0.1f * s), glm::vec3(0, 1, 0)) * v;
+    return v;
+  }
+
+  // Everything the shimmer depends on: the eye, the frame's size, every setting of the lesson.
+  std::string shimmerKey(const Frame& f) const {
+    std::ostringstream key;
+    for (int c = 0; c < 4; ++c) {
+      for (int r = 0; r < 4; ++r) key << f.view[c][r] << ',' << f.projection[c][r] << ',';
+    }
+    key << f.width << 'x' << f.height << ' ' << f.light.direction.x << ',' << f.light.direction.y
+        << ',' << f.light.direction.z;
+    for (const char* name :
+         {"cascades.count", "cascades.split", "cascades.lambda", "cascades.fit", "cascades.snap",
+          "cascades.blend", "cascades.size", "cascades.far", "cascades.filter", "bias.normal",
+          "bias.depth", "shimmer.path", "scene"}) {
+      key << ' ' << f.params.at(name).text();
+    }
+    // Where the objects are (a lesson may move one): their matrices' bytes, hashed (FNV-1a).
+    std::uint64_t hash = 1469598103934665603ULL;
+    for (const SceneObject& o : f.scene.objects) {
+      const auto* bytes = reinterpret_cast<const unsigned char*>(&o.model);
+      for (size_t i = 0; i < sizeof o.model; ++i) hash = (hash ^ bytes[i]) * 1099511628211ULL;
+    }
+    key << ' ' << hash;
+    return key.str();
+  }
+
+  // The points this frame shows, shadowed or not by the maps of each step of the path: the
+  // share of sunlit points whose state flips between two steps, over all steps.
+  void measureShimmer(Frame& f) {
+    auto timing = f.measure.pass("shimmer");
+    if (shimmer_target_w_ != f.width || shimmer_target_h_ != f.height) {
+      shimmer_color_ = Texture::color(f.width, f.height, GL_RGBA8);
+      shimmer_depth_ = Texture::depthStencil(f.width, f.height);
+      shimmer_target_ = std::make_unique<Framebuffer>();
+      shimmer_target_->attachColor(shimmer_color_);
+      shimmer_target_->attachDepthStencil(shimmer_depth_);
+      shimmer_target_->check();
+      shimmer_target_w_ = f.width, shimmer_target_h_ = f.height;
+    }
+    const size_t pixels = static_cast<size_t>(f.width) * static_cast<size_t>(f.height);
+    std::vector<unsigned char> last, now(pixels * 4);
+    long long flips = 0, counted = 0;
+    for (int k = 0; k <= kShimmerSteps; ++k) {
+      const glm::mat4 view = stepView(f.view, k);
+      renderAtlas(f, view, /*counted=*/false);
+      shimmer_target_->bind();
+      glViewport(0, 0, f.width, f.height);
+      glClearColor(0, 0, 0, 0);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      std::vector<std::string> views = f.params.at("view").choices;
+      views.push_back("shimmer");  // a view of its own, never offered: state and coverage
+      const Program& e = eyeProgram(choiceDefines("view", views, "shimmer"));
+      setEyeUniforms(e, f, view);
+      e.set("uViewProjection", f.projection * f.view);  // the same pixels, the same points
+      f.drawObjects(e, Objects::All);
+      Sampler::unbind(0);
+      glReadPixels(0, 0, f.width, f.height, GL_RGBA, GL_UNSIGNED_BYTE, now.data());
+      if (k > 0) {
+        for (size_t p = 0; p < pixels; ++p) {
+          const unsigned char* a = &last[4 * p];
+          const unsigned char* b = &now[4 * p];
+          // Alpha: a surface facing the sun; green: inside the cascades at both steps.
+          if (a[3] < 128 || a[1] < 128 || b[1] < 128) continue;
+          ++counted;
+          if ((a[0] < 128) != (b[0] < 128)) ++flips;
+        }
+      }
+      std::swap(last, now);
+      now.resize(pixels * 4);
+    }
+    shimmer_counted_ = counted / kShimmerSteps;
+    shimmer_pct_ =
+        counted > 0 ? 100.0 * static_cast<double>(flips) / static_cast<double>(counted) : 0.0;
+    f.bindTarget();
+  }
+
+  IntParam count_, size_;
+  ChoiceParam<cascade::Split> split_;
+  ChoiceParam<> filter_;
+  ChoiceParam<Fit> fit_;
+  ChoiceParam<Path> path_;
+  FloatParam lambda_, blend_, far_, normal_, depth_bias_, dimming_;
+  BoolParam snap_, cache_, off_;
+  ProgramVariants depth_programs_, eye_programs_;
+  Sampler compare_nearest_, compare_linear_;
+  Texture atlas_;
+  std::unique_ptr<Framebuffer> framebuffer_;
+  int cols_ = 1, rows_ = 1, used_count_ = 0;
+  std::array<float, kMaxCascades + 1> splits_{};
+  std::array<cascade::Fit, kMaxCascades> fits_{};
+  glm::mat4 atlas_view_{0.0f}, atlas_projection_{0.0f};
+  std::string shimmer_key_;
+  double shimmer_pct_ = 0.0;
+  long long shimmer_counted_ = 0;
+  Texture shimmer_color_, shimmer_depth_;
+  std::unique_ptr<Framebuffer> shimmer_target_;
+  int shimmer_target_w_ = 0, shimmer_target_h_ = 0;
+};
+
+SHADOWS_LESSON(Cascades);
+
+}  // namespace shadows

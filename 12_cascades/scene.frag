@@ -1,0 +1,107 @@
+#version 330 core
+// Pass 2 from the eye, with cascades: the fragment's depth along the eye's view picks the
+// slice, and the slice's map answers as lesson 03's does:
+//   i = the first cascade with  depth <= split_far[i]
+//   s = B * P_i * V_sun * (p + n * bias.normal * texel_i)     (its tile of the atlas)
+//   shade = s.z - bias.depth * texel_i / depth_range_i  <=  map_i(s.xy)
+// In the last `blend` share of a slice the next cascade's answer is mixed in, so the seam
+// where the texels change size does not show as a line.
+#include "lighting.glsl"
+
+#define MAX_CASCADES 4
+in vec3 vWorld;
+in vec3 vNormal;
+in vec4 vShadowCoord;  // unused: shadow_coord.vert's one-map lookup
+uniform sampler2DShadow uAtlas;  // every cascade's tile; compare mode on (a sampler object)
+uniform int uCount;              // cascades in use (0: shadow.off)
+uniform mat4 uCascadeView;       // the eye whose slices the cascades are (shimmer: a step's)
+uniform mat4 uCascade[MAX_CASCADES];     // world to the cascade's clip space (orthographic)
+uniform vec2 uTileOffset[MAX_CASCADES];  // the tile's corner in the atlas
+uniform vec4 uTile[MAX_CASCADES];        // the tile less half a texel each side (a clamp)
+uniform float uTexelWorld[MAX_CASCADES]; // a texel's side in world units
+uniform float uDepthRange[MAX_CASCADES]; // world units from the map's near to its far
+uniform float uSplitNear[MAX_CASCADES];
+uniform float uSplitFar[MAX_CASCADES];
+uniform vec3 uCascadeColor[MAX_CASCADES];
+uniform vec2 uTileScale;
+uniform float uSize;        // texels along a cascade's side
+uniform float uBiasNormal;  // texels of the cascade
+uniform float uBiasDepth;   // texels of the cascade
+uniform float uBlend;       // share of a slice blended with the next
+uniform vec3 uColor;
+out vec4 outColor;
+
+// Where cascade i sees the point (x, y in [0, 1] inside its box; z its depth there).
+vec3 cascadeCoord(int i, vec3 p) {
+  return 0.5 * (uCascade[i] * vec4(p, 1.0)).xyz + 0.5;
+}
+
+float lookup(int i, vec3 n) {
+  // Toward the sun's side of the surface, by a texel of this cascade.
+  float side = dot(n, uLightDir) > 0.0 ? -1.0 : 1.0;
+  vec3 s = cascadeCoord(i, vWorld + side * n * uBiasNormal * uTexelWorld[i]);
+  // Outside its box (a slice's corner past the box's float edge): unshadowed, not guessed.
+  if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) return 1.0;
+  vec2 uv = clamp(uTileOffset[i] + s.xy * uTileScale, uTile[i].xy, uTile[i].zw);
+  float reference = s.z - uBiasDepth * uTexelWorld[i] / uDepthRange[i];
+  return texture(uAtlas, vec3(uv, reference));
+}
+
+float viewDepth() {
+  return -(uCascadeView * vec4(vWorld, 1.0)).z;
+}
+
+// The cascade a depth falls in, or uCount beyond the shadow distance.
+int cascadeOf(float depth) {
+  for (int i = 0; i < MAX_CASCADES; ++i) {
+    if (i < uCount && depth <= uSplitFar[i]) return i;
+  }
+  return uCount;
+}
+
+float shadowTerm(vec3 n, int i, float depth) {
+  if (i >= uCount) return 1.0;  // beyond the shadow distance: no map, no shadow
+  float shade = lookup(i, n);
+  float start = uSplitFar[i] - uBlend * (uSplitFar[i] - uSplitNear[i]);
+  if (i + 1 < uCount && depth > start) {
+    shade = mix(shade, lookup(i + 1, n), (depth - start) / max(uSplitFar[i] - start, 1e-6));
+  }
+  return shade;
+}
+
+void main() {
+  vec3 n = normalize(vNormal);
+  float depth = viewDepth();
+  int cascade = cascadeOf(depth);
+#if SHADOW_OFF
+  float shade = 1.0;  // shadow.off: the baseline, no lookup at all
+#else
+  float shade = shadowTerm(n, cascade, depth);
+#endif
+#if VIEW == VIEW_SHADED
+  outColor = vec4(shadeSurface(uColor, vWorld, n, shade), 1.0);
+#elif VIEW == VIEW_VISIBILITY
+  outColor = vec4(vec3(shade), 1.0);
+#elif VIEW == VIEW_CASCADES
+  // Each slice its colour, dimmed in shadow; grey beyond the shadow distance.
+  vec3 c = cascade < uCount ? uCascadeColor[cascade] : vec3(0.5);
+  outColor = vec4(c * (0.35 + 0.65 * shade), 1.0);
+#elif VIEW == VIEW_TEXEL_GRID
+  // Every map texel a square of the checkerboard, in its cascade's colour: snapped boxes keep
+  // the squares still on the ground as the eye moves; free ones make them slide.
+  vec3 c = vec3(0.5);
+  if (cascade < uCount) {
+    vec2 t = cascadeCoord(cascade, vWorld).xy * uSize;
+    float odd = mod(floor(t.x) + floor(t.y), 2.0);
+    // Where a pixel spans a texel or more the squares cannot be drawn: their average, not a
+    // moiré (texels a pixel from the screen-space derivatives).
+    float texels = max(length(dFdx(t)), length(dFdy(t)));
+    odd = mix(odd, 0.5, clamp(2.0 * texels - 1.0, 0.0, 1.0));
+    c = uCascadeColor[cascade] * (0.55 + 0.45 * odd);
+  }
+  outColor = vec4(c * (0.4 + 0.6 * shade), 1.0);
+#else  // VIEW_SHIMMER (never offered): the state, inside the cascades, facing the sun
+  float sunlit = dot(n, -uLightDir) > 0.0 ? 1.0 : 0.0;
+  outColor = vec4(shade >= 0.5 ? 1.0 : 0.0, cascade < uCount ? 1.0 : 0.0, 0.0, sunlit);
+#endif
+}

@@ -1,0 +1,214 @@
+// Lesson 12 end to end, headless: cascaded maps for the sun against the truth. The splits'
+// formulas and the boxes' snapping (cascade_math.hpp); goldens of the shaded and cascade
+// views; the cascade colouring where the splits say; the error bound at the defaults and for
+// suns no other test uses; shimmer with snapped spheres against free slices; each cascade
+// rendered once and culled on its own; the maps kept while nothing moves.
+#include "harness.hpp"
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "../12_cascades/cascade_math.hpp"
+
+namespace shadows {
+namespace {
+
+using testing::counter;
+using testing::reportNumber;
+using testing::reportValue;
+using testing::startLesson;
+
+const std::string kLesson = "12_cascades";
+
+TEST(CascadeMath, SplitsFollowTheirFormulas) {
+  const float n = 0.5f, f = 128.0f;
+  for (int i = 0; i <= 4; ++i) {
+    const float t = static_cast<float>(i) / 4.0f;
+    EXPECT_FLOAT_EQ(cascade::splitDistance(cascade::Split::Uniform, i, 4, n, f, 0.3f),
+                    n + (f - n) * t);
+    EXPECT_FLOAT_EQ(cascade::splitDistance(cascade::Split::Logarithmic, i, 4, n, f, 0.3f),
+                    n * std::pow(f / n, t));
+  }
+  // Logarithmic: every slice as many times deeper than the last (here 4x: 0.5, 2, 8, 32, 128).
+  EXPECT_NEAR(cascade::splitDistance(cascade::Split::Logarithmic, 2, 4, n, f, 0.0f), 8.0f, 1e-4f);
+  // Practical: λ = 1 is the logarithmic split, λ = 0 the uniform one, between them the blend.
+  for (int i = 0; i <= 3; ++i) {
+    const float u = cascade::splitDistance(cascade::Split::Uniform, i, 3, n, f, 0.0f);
+    const float l = cascade::splitDistance(cascade::Split::Logarithmic, i, 3, n, f, 0.0f);
+    EXPECT_FLOAT_EQ(cascade::splitDistance(cascade::Split::Practical, i, 3, n, f, 1.0f), l);
+    EXPECT_FLOAT_EQ(cascade::splitDistance(cascade::Split::Practical, i, 3, n, f, 0.0f), u);
+    EXPECT_NEAR(cascade::splitDistance(cascade::Split::Practical, i, 3, n, f, 0.25f),
+                0.25f * l + 0.75f * u, 1e-4f);
+  }
+}
+
+TEST(CascadeMath, ASnappedSphereBoxKeepsItsSizeAndMovesByWholeTexelsWhateverTheEyeDoes) {
+  const glm::mat4 light = cascade::lightRotation(glm::normalize(glm::vec3(-0.4f, -0.8f, 0.3f)));
+  const glm::mat4 view = glm::lookAt(glm::vec3(0, 1.7f, 8), glm::vec3(0, 1.2f, -30), {0, 1, 0});
+  const float fov = glm::radians(50.0f);
+  const auto fit = [&](const glm::mat4& v, bool sphere, bool snap) {
+    return cascade::fitCascade(cascade::sliceCorners(v, fov, 4.0f / 3.0f, 3.0f, 12.0f), light, 1024,
+                               sphere, snap, glm::vec3(0, 0, -96), 120.0f);
+  };
+  const cascade::Fit a = fit(view, true, true);
+  // Twenty-four eyes, each walked and turned a little further: float noise in the corners
+  // must not reach the box's size.
+  for (int k = 1; k <= 24; ++k) {
+    const float s = static_cast<float>(k);
+    const glm::mat4 moved = glm::rotate(glm::mat4(1.0f), glm::radians(0.37f * s), {0, 1, 0}) *
+                            view * glm::translate(glm::mat4(1.0f), {-0.013f * s, 0.0f, 0.029f * s});
+    const cascade::Fit b = fit(moved, true, true);
+    EXPECT_EQ(a.max - a.min, b.max - b.min) << k;  // the same size, to the bit
+    const glm::vec2 texels = (b.min - a.min) / a.texel_world;
+    EXPECT_NEAR(texels.x, std::round(texels.x), 1e-3f) << k;
+    EXPECT_NEAR(texels.y, std::round(texels.y), 1e-3f) << k;
+  }
+  const glm::mat4 moved = glm::rotate(glm::mat4(1.0f), glm::radians(0.7f), {0, 1, 0}) * view *
+                          glm::translate(glm::mat4(1.0f), {-0.05f, 0.0f, 0.11f});
+  const cascade::Fit b = fit(moved, true, true);
+  EXPECT_GT(glm::length((b.min - a.min) / a.texel_world), 1.0f);  // it did move
+  // Fitted to the slice, the box changes size as the eye turns; unsnapped, it slides.
+  const cascade::Fit c = fit(view, false, false), d = fit(moved, false, false);
+  EXPECT_GT(glm::length((d.max - d.min) - (c.max - c.min)), 1e-3f);
+  // The slice's own box is the tighter one.
+  EXPECT_LT((c.max - c.min).x * (c.max - c.min).y, (a.max - a.min).x * (a.max - a.min).y);
+}
+
+TEST(Lesson12, SnapshotsMatchTheirGoldens) {
+  auto runner = startLesson(kLesson, {});
+  runner->renderFrame();
+  testing::expectMatchesGolden(runner->readImage(), kLesson);
+  ASSERT_EQ(runner->params().set("view", "cascades"), "");
+  runner->renderFrame();
+  testing::expectMatchesGolden(runner->readImage(), kLesson + "_cascades");
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
+// Down the middle of the road, each pixel's view depth (the ray's hit on the road, y = 0)
+// says which slice it is in; the cascades view must paint it that slice's colour.
+TEST(Lesson12, TheCascadeColouringChangesWhereTheSplitsSay) {
+  for (const char* split : {"uniform", "logarithmic", "practical"}) {
+    const int w = 320, h = 240;
+    auto runner = startLesson(
+        kLesson, {"view=cascades", std::string("cascades.split=") + split, "dimming=1"}, w, h);
+    runner->renderFrame();
+    const Image image = runner->readImage();
+    const nlohmann::ordered_json splits = reportValue(*runner, "cascade_splits");
+    ASSERT_EQ(splits.size(), 5u);
+    const glm::vec3 eye = runner->params().at("camera.pos").v();
+    const glm::mat4 view = glm::lookAt(eye, runner->params().at("camera.target").v(), {0, 1, 0});
+    const glm::mat4 inverse =
+        glm::inverse(glm::perspective(glm::radians(runner->params().at("camera.fov").f()),
+                                      static_cast<float>(w) / h, 0.1f, 300.0f) *
+                     view);
+    const glm::vec3 colors[4] = {
+        {0.95f, 0.35f, 0.3f}, {0.35f, 0.85f, 0.35f}, {0.35f, 0.5f, 0.95f}, {0.95f, 0.8f, 0.25f}};
+    int checked = 0, agreed = 0;
+    std::set<int> seen;
+    for (int y = 0; y < h; ++y) {  // image rows, bottom up as GL reads them
+      const float ndc_y = 2.0f * (static_cast<float>(y) + 0.5f) / h - 1.0f;
+      const float ndc_x = 2.0f * (w / 2 + 0.5f) / w - 1.0f;
+      glm::vec4 a = inverse * glm::vec4(ndc_x, ndc_y, -1.0f, 1.0f);
+      glm::vec4 b = inverse * glm::vec4(ndc_x, ndc_y, 1.0f, 1.0f);
+      const glm::vec3 p0 = glm::vec3(a) / a.w, p1 = glm::vec3(b) / b.w;
+      if (p1.y >= p0.y) continue;  // the ray never reaches the road
+      const glm::vec3 hit = p0 + (p1 - p0) * (p0.y / (p0.y - p1.y));
+      const float depth = -(view * glm::vec4(hit, 1.0f)).z;
+      int expected = -1;
+      bool near_split = false;
+      for (int i = 0; i < 4; ++i) {
+        const float d0 = splits[static_cast<size_t>(i)].get<float>();
+        const float d1 = splits[static_cast<size_t>(i) + 1].get<float>();
+        if (depth > d0 && depth <= d1) expected = i;
+        near_split = near_split || std::abs(depth - d1) < 0.02f * d1;
+      }
+      if (expected < 0 || near_split) continue;
+      const std::uint8_t* px = &image.rgba[4 * (static_cast<size_t>(y) * w + w / 2)];
+      const glm::vec3 c(px[0], px[1], px[2]);
+      int nearest = 0;
+      float best = 10.0f;
+      for (int i = 0; i < 4; ++i) {
+        const float d = glm::length(glm::normalize(c) - glm::normalize(colors[i]));
+        if (d < best) best = d, nearest = i;
+      }
+      ++checked;
+      agreed += nearest == expected ? 1 : 0;
+      seen.insert(expected);
+    }
+    EXPECT_GT(checked, 40) << split;
+    EXPECT_GE(agreed, checked * 95 / 100) << split << ": " << agreed << " of " << checked;
+    // The road crosses three slices at least; the logarithmic split's first ends 0.6 m from the
+    // eye, before the road comes into view.
+    EXPECT_GE(seen.size(), std::string(split) == "logarithmic" ? 2u : 3u) << split;
+    EXPECT_EQ(runner->glErrors(), 0);
+  }
+}
+
+TEST(Lesson12, SnappedSpheresShimmerATenthOfWhatFreeSlicesDo) {
+  double free_slices = 0.0;
+  {
+    auto runner = startLesson(kLesson, {"cascades.fit=slice", "cascades.snap=false"}, 640, 480);
+    runner->renderFrame();
+    free_slices = reportNumber(*runner, "shimmer_pct");
+    EXPECT_GT(reportNumber(*runner, "shimmer_pixels"), 100000);
+  }
+  auto runner = startLesson(kLesson, {}, 640, 480);
+  runner->renderFrame();
+  const double snapped = reportNumber(*runner, "shimmer_pct");
+  EXPECT_GT(free_slices, 0.05);
+  EXPECT_LE(snapped, free_slices / 10.0) << snapped << " against " << free_slices;
+  // Snapping alone is not enough while the slice's box changes size as the eye turns.
+  runner.reset();
+  auto snapped_slices = startLesson(kLesson, {"cascades.fit=slice", "shimmer.path=turn"}, 640, 480);
+  snapped_slices->renderFrame();
+  EXPECT_GT(reportNumber(*snapped_slices, "shimmer_pct"), 5.0 * snapped);
+}
+
+TEST(Lesson12, ErrorStaysWithinTheBoundAtTheDefaultsAndForSunsNoOtherTestUses) {
+  for (const std::vector<std::string>& sets : {std::vector<std::string>{},
+                                               {"scene=street_low_sun"},
+                                               {"light.pos=-30,50,-20"},
+                                               {"light.pos=10,30,40"}}) {
+    const ErrorMetrics e = testing::measureOnce(kLesson, sets, 640, 480);
+    EXPECT_LE(e.false_shadow_pct, 0.2) << testing::label(sets);
+    EXPECT_LE(e.false_lit_pct, 0.2) << testing::label(sets);
+    EXPECT_GT(e.counted_pixels, 100000);
+  }
+}
+
+TEST(Lesson12, EachCascadeIsRenderedOnceCulledOnItsOwnAndKeptWhileNothingMoves) {
+  auto runner = startLesson(kLesson, {});
+  runner->renderFrame();
+  EXPECT_EQ(counter(*runner, "cascade_renders"), 4);
+  EXPECT_EQ(counter(*runner, "shadow_map_renders"), 1);
+  // Each cascade draws only the casters in its box: most posts are outside the near ones.
+  EXPECT_GT(counter(*runner, "culled_objects"), 100);
+  runner->renderFrame();
+  EXPECT_EQ(counter(*runner, "cascade_renders"), 0);
+  EXPECT_EQ(counter(*runner, "shadow_map_renders"), 0);
+  // The eye moves: the slices move with it.
+  ASSERT_EQ(runner->params().assign("camera.pos=0.5,1.7,7"), "");
+  runner->renderFrame();
+  EXPECT_EQ(counter(*runner, "cascade_renders"), 4);
+  ASSERT_EQ(runner->params().assign("cascades.count=2"), "");
+  runner->renderFrame();
+  EXPECT_EQ(counter(*runner, "cascade_renders"), 2);
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
+TEST(Lesson12, EveryMapInputRendersTheMapsAgain) {
+  testing::expectEveryMapInputRendersTheMapAgain(
+      kLesson,
+      {"cascades.count=3", "cascades.split=uniform", "cascades.fit=slice", "cascades.snap=false",
+       "cascades.size=512", "cascades.far=60", "light.pos=-20,40,10", "scene=street_low_sun"},
+      {});
+  testing::expectACasterMoveRendersTheMapAgain(kLesson, {});
+}
+
+TEST(Lesson12, EveryViewIsCleanAndDistinct) {
+  auto runner = startLesson(kLesson, {});
+  testing::expectEveryViewCleanAndDistinct(*runner);
+}
+
+}  // namespace
+}  // namespace shadows
