@@ -17,7 +17,9 @@
 // texels and never change size: their texels stay put on the ground and nothing flips.
 #include <imgui.h>
 
+#include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -39,6 +41,14 @@ const std::array<glm::vec3, kMaxCascades> kCascadeColors = {
     glm::vec3(0.95f, 0.35f, 0.3f), glm::vec3(0.35f, 0.85f, 0.35f), glm::vec3(0.35f, 0.5f, 0.95f),
     glm::vec3(0.95f, 0.8f, 0.25f)};
 }  // namespace
+
+// One depth texture holding every cascade's tile, and what each tile was fitted for.
+struct Atlas {
+  Texture texture;
+  std::unique_ptr<Framebuffer> framebuffer;
+  std::array<cascade::Fit, kMaxCascades> fits{};
+  glm::mat4 view{0.0f};  // the eye the first cascade was rendered for (0: nothing yet)
+};
 
 class Cascades final : public Lesson {
  public:
@@ -91,6 +101,9 @@ class Cascades final : public Lesson {
                          "cascade's texels");
     depth_bias_ = p.addFloat("bias.depth", 1.0f, 0.0f, 8.0f,
                              "constant depth bias, in texels of the fragment's cascade");
+    update_ = p.addInt("cascades.update", 1, 1, 8,
+                       "render the far cascades every Nth frame the eye moves (the first: every "
+                       "frame); kept ones keep their boxes");
     path_ = p.addChoice("shimmer.path", {"walk", "turn", "both"}, "both",
                         "the eye's steps the shimmer is measured over: 3 cm forward and "
                         "sideways, 0.1° of turn, or both");
@@ -121,32 +134,39 @@ class Cascades final : public Lesson {
       f.measure.count("shadow_map_renders", 0);
       f.measure.count("cascade_renders", 0);
     } else {
-      ensureAtlas();
+      ensureAtlas(atlas_);
       const std::string key = shimmerKey(f);
       // Eight steps of maps and lookups: measured once the input rests, as the truth is.
       if (key != shimmer_key_ && !f.input_moving) {
         measureShimmer(f);
         shimmer_key_ = key;
-        f.params.markDirty(kDirtyShadowMap);  // the atlas holds the path's last step
       }
-      const bool moved = f.view != atlas_view_ || f.projection != atlas_projection_;
-      const bool stale = f.params.consume(kDirtyShadowMap) || !cache_() || moved;
-      if (stale) {
+      // Everything when a setting or the scene changed; when only the eye moved, the first
+      // cascade, and the others every cascades.update-th such frame.
+      const int all = (1 << count_()) - 1;
+      int mask = 0;
+      if (f.params.consume(kDirtyShadowMap) || !cache_()) {
+        mask = all;
+        moved_frames_ = 0;
+      } else if (f.view != atlas_.view || f.projection != atlas_projection_) {
+        mask = ++moved_frames_ % update_() == 0 ? all : 1;
+      }
+      if (mask != 0) {
         auto timing = f.measure.pass("shadow");
-        renderAtlas(f, f.view, /*counted=*/true);
+        renderAtlas(f, atlas_, f.view, mask);
       }
-      f.measure.count("shadow_map_renders", stale ? 1 : 0);
-      if (!stale) f.measure.count("cascade_renders", 0);
+      f.measure.count("shadow_map_renders", mask != 0 ? 1 : 0);
+      f.measure.count("cascade_renders", std::popcount(static_cast<unsigned>(mask)));
     }
 
     auto timing = f.measure.pass("eye", /*countPassed=*/true);
     f.clearTarget();
     if (f.mode == "maps" && !off_()) {
-      f.drawDepthInset(atlas_, 0.0f, 1.0f, /*perspective=*/false, /*fullscreen=*/true);
+      f.drawDepthInset(atlas_.texture, 0.0f, 1.0f, /*perspective=*/false, /*fullscreen=*/true);
       return;
     }
     const Program& e = eyeProgram(f.viewDefines());
-    setEyeUniforms(e, f, f.view);
+    setEyeUniforms(e, f, atlas_, f.view);
     e.set("uViewProjection", f.projection * f.view);
     f.drawObjects(e, Objects::All);
     Sampler::unbind(0);
@@ -155,7 +175,7 @@ class Cascades final : public Lesson {
   // The error slice by slice (report: error.cascade_1 ...): pixels whose view depth falls in it.
   std::vector<ErrorRegion> errorRegions() const override {
     std::vector<ErrorRegion> regions;
-    const glm::mat4 view = atlas_view_;
+    const glm::mat4 view = atlas_.view;
     for (int i = 0; i < kMaxCascades; ++i) {
       const float d0 = i < used_count_ ? splits_[static_cast<size_t>(i)] : 0.0f;
       const float d1 = i < used_count_ ? splits_[static_cast<size_t>(i) + 1] : 0.0f;
@@ -179,10 +199,16 @@ class Cascades final : public Lesson {
     // One texel's side on the ground facing the sun, cascade by cascade: what each slice gets.
     json.beginArray("cascade_texel_world");
     for (int i = 0; i < used_count_; ++i) {
-      json.value("", fits_[static_cast<size_t>(i)].texel_world);
+      json.value("", atlas_.fits[static_cast<size_t>(i)].texel_world);
     }
     json.endArray();
-    json.value("atlas_bytes", static_cast<long long>(atlas_.width()) * atlas_.height() * 4);
+    json.beginArray("cascade_texels_per_pixel");
+    for (int i = 0; i < used_count_; ++i) {
+      json.value("", off_() ? 0.0 : texels_per_pixel_[static_cast<size_t>(i)]);
+    }
+    json.endArray();
+    json.value("atlas_bytes",
+               static_cast<long long>(atlas_.texture.width()) * atlas_.texture.height() * 4);
     json.value("shimmer_path", path_.name());
     json.value("shimmer_steps", kShimmerSteps);
     json.value("shimmer_pct", off_() ? 0.0 : shimmer_pct_);
@@ -196,10 +222,12 @@ class Cascades final : public Lesson {
         shimmer_pct_);
     std::string slices;
     for (int i = 0; i < used_count_; ++i) {
-      char line[96];
-      std::snprintf(line, sizeof line, "%s%.1f-%.1f m: %.1f cm a texel", i ? "; " : "",
-                    splits_[static_cast<size_t>(i)], splits_[static_cast<size_t>(i) + 1],
-                    100.0f * fits_[static_cast<size_t>(i)].texel_world);
+      char line[128];
+      std::snprintf(line, sizeof line, "%s%.1f-%.1f m: %.1f cm a texel, %.2f texels a pixel",
+                    i ? "; " : "", splits_[static_cast<size_t>(i)],
+                    splits_[static_cast<size_t>(i) + 1],
+                    100.0f * atlas_.fits[static_cast<size_t>(i)].texel_world,
+                    texels_per_pixel_[static_cast<size_t>(i)]);
       slices += line;
     }
     ImGui::TextWrapped("cascades: %s", slices.c_str());
@@ -234,20 +262,20 @@ class Cascades final : public Lesson {
   }
 
  private:
-  void ensureAtlas() {
+  void ensureAtlas(Atlas& atlas) {
     const int n = count_(), size = size_();
-    const int cols = n == 1 ? 1 : 2, rows = n <= 2 ? 1 : 2;
-    if (atlas_.width() == cols * size && atlas_.height() == rows * size && cols_ == cols) return;
-    atlas_ = Texture::depth(cols * size, rows * size, 24);
-    framebuffer_ = std::make_unique<Framebuffer>();
-    framebuffer_->attachDepth(atlas_);
-    framebuffer_->check();
-    cols_ = cols, rows_ = rows;
-    atlas_view_ = glm::mat4(0.0f);  // nothing in it yet
+    cols_ = n == 1 ? 1 : 2, rows_ = n <= 2 ? 1 : 2;
+    Texture& t = atlas.texture;
+    if (t.width() == cols_ * size && t.height() == rows_ * size) return;
+    t = Texture::depth(cols_ * size, rows_ * size, 24);
+    atlas.framebuffer = std::make_unique<Framebuffer>();
+    atlas.framebuffer->attachDepth(t);
+    atlas.framebuffer->check();
+    atlas.view = glm::mat4(0.0f);  // nothing in it yet
   }
 
   // The slices for the eye `view`, their boxes, and the casters of each into its tile.
-  void renderAtlas(Frame& f, const glm::mat4& view, bool counted) {
+  void renderAtlas(Frame& f, Atlas& atlas, const glm::mat4& view, int mask) {
     used_count_ = count_();
     const float near = f.scene.camera.near;
     const float far = std::max(far_(), near * 2.0f);
@@ -260,42 +288,48 @@ class Cascades final : public Lesson {
     const Bounds scene = f.scene.bounds();
     const float fov = glm::radians(f.params.at("camera.fov").f());
     const float aspect = static_cast<float>(f.width) / static_cast<float>(std::max(f.height, 1));
-    framebuffer_->bind();
+    atlas.framebuffer->bind();
     PassState{}.apply();
-    glViewport(0, 0, atlas_.width(), atlas_.height());
+    glViewport(0, 0, atlas.texture.width(), atlas.texture.height());
     glClearDepthf(1.0f);
-    glClear(GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_SCISSOR_TEST);  // each tile cleared on its own: the others may be kept
     const Program& d = depth_programs_.get({});
     for (int i = 0; i < used_count_; ++i) {
+      if (((mask >> i) & 1) == 0) continue;  // kept: its box and its depths as they were
       const auto k = static_cast<size_t>(i);
       const auto corners = cascade::sliceCorners(view, fov, aspect, splits_[k], splits_[k + 1]);
-      fits_[k] = cascade::fitCascade(corners, light, size_(), fit_() == Fit::Sphere, snap_(),
-                                     scene.center(), scene.radius());
+      cascade::Fit& fit = atlas.fits[k];
+      fit = cascade::fitCascade(corners, light, size_(), fit_() == Fit::Sphere, snap_(),
+                                scene.center(), scene.radius());
       glViewport((i % cols_) * size_(), (i / cols_) * size_(), size_(), size_());
-      d.set("uLightViewProjection", fits_[k].view_projection);
-      f.drawObjects(d, Objects::Casters, &fits_[k].view_projection);
+      glScissor((i % cols_) * size_(), (i / cols_) * size_(), size_(), size_());
+      glClear(GL_DEPTH_BUFFER_BIT);
+      d.set("uLightViewProjection", fit.view_projection);
+      f.drawObjects(d, Objects::Casters, &fit.view_projection);
     }
+    glDisable(GL_SCISSOR_TEST);
     PassState{}.apply();
-    atlas_view_ = view;
+    if ((mask & 1) != 0) atlas.view = view;  // the eye the first cascade follows
     atlas_projection_ = f.projection;
-    if (counted) f.measure.count("cascade_renders", used_count_);
   }
 
   const Program& eyeProgram(const std::vector<std::string>& view) {
-    return eye_programs_.get({view, define("SHADOW_OFF", off_())});
+    return eye_programs_.get(
+        {view, define("SHADOW_OFF", off_()), define("KEPT_CASCADES", update_() > 1)});
   }
 
   // What the lookup needs: each cascade's matrix into its tile, the slices, the biases.
-  void setEyeUniforms(const Program& e, Frame& f, const glm::mat4& cascadeView) const {
-    atlas_.bind(0);
+  void setEyeUniforms(const Program& e, Frame& f, const Atlas& atlas,
+                      const glm::mat4& cascadeView) const {
+    atlas.texture.bind(0);
     (filter_.name() == "linear" ? compare_linear_ : compare_nearest_).bind(0);
     e.set("uAtlas", 0);
     e.set("uShadowMatrix", glm::mat4(1.0f));
     e.set("uCount", off_() ? 0 : used_count_);
     e.set("uCascadeView", cascadeView);
     const glm::vec2 tile(1.0f / static_cast<float>(cols_), 1.0f / static_cast<float>(rows_));
-    const glm::vec2 half_texel(0.5f / static_cast<float>(std::max(atlas_.width(), 1)),
-                               0.5f / static_cast<float>(std::max(atlas_.height(), 1)));
+    const glm::vec2 half_texel(0.5f / static_cast<float>(std::max(atlas.texture.width(), 1)),
+                               0.5f / static_cast<float>(std::max(atlas.texture.height(), 1)));
     for (int i = 0; i < kMaxCascades; ++i) {
       const auto k = static_cast<size_t>(i);
       char index[8];
@@ -303,11 +337,11 @@ class Cascades final : public Lesson {
       const std::string at = index;
       const glm::vec2 offset(static_cast<float>(i % cols_) * tile.x,
                              static_cast<float>(i / cols_) * tile.y);
-      e.set("uCascade" + at, fits_[k].view_projection);
+      e.set("uCascade" + at, atlas.fits[k].view_projection);
       e.set("uTileOffset" + at, offset);
       e.set("uTile" + at, glm::vec4(offset + half_texel, offset + tile - half_texel));
-      e.set("uTexelWorld" + at, fits_[k].texel_world);
-      e.set("uDepthRange" + at, fits_[k].depth_range);
+      e.set("uTexelWorld" + at, atlas.fits[k].texel_world);
+      e.set("uDepthRange" + at, atlas.fits[k].depth_range);
       e.set("uSplitFar" + at, splits_[k + 1]);
       e.set("uSplitNear" + at, splits_[k]);
       e.set("uCascadeColor" + at, kCascadeColors[k]);
@@ -340,8 +374,8 @@ class Cascades final : public Lesson {
         << ',' << f.light.direction.z;
     for (const char* name :
          {"cascades.count", "cascades.split", "cascades.lambda", "cascades.fit", "cascades.snap",
-          "cascades.blend", "cascades.size", "cascades.far", "cascades.filter", "bias.normal",
-          "bias.depth", "shimmer.path", "scene"}) {
+          "cascades.update", "cascades.blend", "cascades.size", "cascades.far", "cascades.filter",
+          "bias.normal", "bias.depth", "shimmer.path", "scene"}) {
       key << ' ' << f.params.at(name).text();
     }
     // Where the objects are (a lesson may move one): their matrices' bytes, hashed (FNV-1a).
@@ -367,12 +401,14 @@ class Cascades final : public Lesson {
       shimmer_target_->check();
       shimmer_target_w_ = f.width, shimmer_target_h_ = f.height;
     }
+    ensureAtlas(path_atlas_);  // its own: the frame's atlas and what it keeps stay as they are
     const size_t pixels = static_cast<size_t>(f.width) * static_cast<size_t>(f.height);
     std::vector<unsigned char> last, now(pixels * 4);
     long long flips = 0, counted = 0;
     for (int k = 0; k <= kShimmerSteps; ++k) {
       const glm::mat4 view = stepView(f.view, k);
-      renderAtlas(f, view, /*counted=*/false);
+      // The far cascades follow the eye every cascades.update-th step, as they would frames.
+      renderAtlas(f, path_atlas_, view, k % update_() == 0 ? (1 << count_()) - 1 : 1);
       shimmer_target_->bind();
       glViewport(0, 0, f.width, f.height);
       glClearColor(0, 0, 0, 0);
@@ -380,7 +416,7 @@ class Cascades final : public Lesson {
       std::vector<std::string> views = f.params.at("view").choices;
       views.push_back("shimmer");  // a view of its own, never offered: state and coverage
       const Program& e = eyeProgram(choiceDefines("view", views, "shimmer"));
-      setEyeUniforms(e, f, view);
+      setEyeUniforms(e, f, path_atlas_, view);
       e.set("uViewProjection", f.projection * f.view);  // the same pixels, the same points
       f.drawObjects(e, Objects::All);
       Sampler::unbind(0);
@@ -390,11 +426,12 @@ class Cascades final : public Lesson {
           const unsigned char* a = &last[4 * p];
           const unsigned char* b = &now[4 * p];
           // Alpha: a surface facing the sun; green: inside the cascades at both steps.
-          if (a[3] < 128 || a[1] < 128 || b[1] < 128) continue;
+          if (a[3] < 128 || a[1] == 0 || b[1] == 0) continue;
           ++counted;
           if ((a[0] < 128) != (b[0] < 128)) ++flips;
         }
       }
+      if (k == 0) texelsPerPixel(now);
       std::swap(last, now);
       now.resize(pixels * 4);
     }
@@ -404,7 +441,24 @@ class Cascades final : public Lesson {
     f.bindTarget();
   }
 
-  IntParam count_, size_;
+  // The median texels per pixel of each cascade over the sunlit pixels it shades (the eye's
+  // own step of the path): what its slice of the frame gets. 0 where it shades none.
+  void texelsPerPixel(const std::vector<unsigned char>& rgba) {
+    std::array<std::vector<unsigned char>, kMaxCascades> levels;
+    for (size_t p = 0; p + 3 < rgba.size(); p += 4) {
+      if (rgba[p + 3] < 128 || rgba[p + 1] == 0 || rgba[p + 1] > kMaxCascades) continue;
+      levels[static_cast<size_t>(rgba[p + 1] - 1)].push_back(rgba[p + 2]);
+    }
+    for (size_t i = 0; i < levels.size(); ++i) {
+      std::vector<unsigned char>& l = levels[i];
+      texels_per_pixel_[i] = 0.0;
+      if (l.empty()) continue;
+      std::nth_element(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(l.size() / 2), l.end());
+      texels_per_pixel_[i] = std::exp2(8.0 * l[l.size() / 2] / 255.0 - 4.0);
+    }
+  }
+
+  IntParam count_, size_, update_;
   ChoiceParam<cascade::Split> split_;
   ChoiceParam<> filter_;
   ChoiceParam<Fit> fit_;
@@ -413,15 +467,16 @@ class Cascades final : public Lesson {
   BoolParam snap_, cache_, off_;
   ProgramVariants depth_programs_, eye_programs_;
   Sampler compare_nearest_, compare_linear_;
-  Texture atlas_;
-  std::unique_ptr<Framebuffer> framebuffer_;
+  Atlas atlas_;       // the frame's
+  Atlas path_atlas_;  // the shimmer path's steps
   int cols_ = 1, rows_ = 1, used_count_ = 0;
+  long long moved_frames_ = 0;  // frames the eye alone moved since all cascades were rendered
   std::array<float, kMaxCascades + 1> splits_{};
-  std::array<cascade::Fit, kMaxCascades> fits_{};
-  glm::mat4 atlas_view_{0.0f}, atlas_projection_{0.0f};
+  glm::mat4 atlas_projection_{0.0f};
   std::string shimmer_key_;
   double shimmer_pct_ = 0.0;
   long long shimmer_counted_ = 0;
+  std::array<double, kMaxCascades> texels_per_pixel_{};
   Texture shimmer_color_, shimmer_depth_;
   std::unique_ptr<Framebuffer> shimmer_target_;
   int shimmer_target_w_ = 0, shimmer_target_h_ = 0;

@@ -40,8 +40,9 @@ float lookup(int i, vec3 n) {
   // Toward the sun's side of the surface, by a texel of this cascade.
   float side = dot(n, uLightDir) > 0.0 ? -1.0 : 1.0;
   vec3 s = cascadeCoord(i, vWorld + side * n * uBiasNormal * uTexelWorld[i]);
-  // Outside its box (a slice's corner past the box's float edge): unshadowed, not guessed.
-  if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) return 1.0;
+  // Outside its box (a kept cascade's box the eye has moved past, or a slice's corner past the
+  // box's float edge): no answer here, the caller asks the next cascade.
+  if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) return -1.0;
   vec2 uv = clamp(uTileOffset[i] + s.xy * uTileScale, uTile[i].xy, uTile[i].zw);
   float reference = s.z - uBiasDepth * uTexelWorld[i] / uDepthRange[i];
   return texture(uAtlas, vec3(uv, reference));
@@ -59,14 +60,28 @@ int cascadeOf(float depth) {
   return uCount;
 }
 
+// Cascade i's answer, or (outside its box) the next one's; -1: neither box holds the point.
+float lookupOrNext(int i, vec3 n) {
+  float shade = lookup(i, n);
+#if KEPT_CASCADES
+  // llvmpipe pays for this lookup on every fragment (34 M of 66 M instructions a frame): only
+  // the variant that keeps cascades (cascades.update > 1) has it.
+  if (shade < 0.0 && i + 1 < uCount) shade = lookup(i + 1, n);
+#endif
+  return shade;
+}
+
 float shadowTerm(vec3 n, int i, float depth) {
   if (i >= uCount) return 1.0;  // beyond the shadow distance: no map, no shadow
-  float shade = lookup(i, n);
+  float shade = lookupOrNext(i, n);
   float start = uSplitFar[i] - uBlend * (uSplitFar[i] - uSplitNear[i]);
-  if (i + 1 < uCount && depth > start) {
-    shade = mix(shade, lookup(i + 1, n), (depth - start) / max(uSplitFar[i] - start, 1e-6));
+  if (i + 1 < uCount && depth > start && shade >= 0.0) {
+    float next = lookupOrNext(i + 1, n);
+    if (next >= 0.0) {
+      shade = mix(shade, next, (depth - start) / max(uSplitFar[i] - start, 1e-6));
+    }
   }
-  return shade;
+  return shade < 0.0 ? 1.0 : shade;  // in no box at all: unshadowed, not guessed
 }
 
 void main() {
@@ -100,8 +115,16 @@ void main() {
     c = uCascadeColor[cascade] * (0.55 + 0.45 * odd);
   }
   outColor = vec4(c * (0.4 + 0.6 * shade), 1.0);
-#else  // VIEW_SHIMMER (never offered): the state, inside the cascades, facing the sun
+#else  // VIEW_SHIMMER (never offered), read back as bytes: the state, inside the cascades,
+       // the cascade's texels per pixel (log2 from -4 to 4), facing the sun
   float sunlit = dot(n, -uLightDir) > 0.0 ? 1.0 : 0.0;
-  outColor = vec4(shade >= 0.5 ? 1.0 : 0.0, cascade < uCount ? 1.0 : 0.0, 0.0, sunlit);
+  float texels = 1.0;
+  if (cascade < uCount) {
+    vec2 t = cascadeCoord(cascade, vWorld).xy * uSize;
+    texels = max(length(dFdx(t)), length(dFdy(t)));
+  }
+  float level = clamp((log2(max(texels, 1e-6)) + 4.0) / 8.0, 0.0, 1.0);
+  outColor = vec4(shade >= 0.5 ? 1.0 : 0.0, cascade < uCount ? float(cascade + 1) / 255.0 : 0.0,
+                  level, sunlit);
 #endif
 }

@@ -193,7 +193,55 @@ TEST(Lesson12, EachCascadeIsRenderedOnceCulledOnItsOwnAndKeptWhileNothingMoves) 
   ASSERT_EQ(runner->params().assign("cascades.count=2"), "");
   runner->renderFrame();
   EXPECT_EQ(counter(*runner, "cascade_renders"), 2);
+  // cascades.update=3: while only the eye moves, the first cascade every frame and the far
+  // one every third.
+  ASSERT_EQ(runner->params().assign("cascades.update=3"), "");
+  runner->renderFrame();
+  std::vector<long long> renders;
+  for (int i = 1; i <= 6; ++i) {
+    ASSERT_EQ(runner->params().assign("camera.pos=" + std::to_string(0.1 * i) + ",1.7,7"), "");
+    runner->renderFrame();
+    renders.push_back(counter(*runner, "cascade_renders"));
+  }
+  const std::vector<long long> expected = {1, 1, 2, 1, 1, 2};
+  EXPECT_EQ(renders, expected);
   EXPECT_EQ(runner->glErrors(), 0);
+}
+
+// A kept far cascade keeps the box it was fitted for; a step of the eye later the frame is
+// still nearly right: the points its box no longer holds ask the next cascade.
+TEST(Lesson12, KeptFarCascadesCostLittleErrorWhileTheEyeTakesAStep) {
+  const std::string step = "camera.pos=1.5,1.7,5";
+  auto kept = startLesson(kLesson, {"cascades.update=8"}, 640, 480);
+  kept->renderFrame();
+  ASSERT_EQ(kept->params().assign(step), "");
+  kept->renderFrame();
+  ASSERT_EQ(counter(*kept, "cascade_renders"), 1);
+  const ErrorMetrics with_kept = kept->measureError().metrics;
+  EXPECT_EQ(kept->glErrors(), 0);
+  kept.reset();
+  const ErrorMetrics fresh = testing::measureOnce(kLesson, {step}, 640, 480);
+  EXPECT_LE(with_kept.false_lit_pct, fresh.false_lit_pct + 0.05);
+  EXPECT_LE(with_kept.false_shadow_pct, fresh.false_shadow_pct + 0.05);
+}
+
+// Texels per pixel, cascade by cascade: the practical split gives every slice that shades the
+// road more than one; one map for the whole view gives it a fifth; an even split starves the
+// nearest slice and spends ten times as many on the next.
+TEST(Lesson12, ThePracticalSplitGivesEverySliceATexelAPixelAndOneMapDoesNot) {
+  const auto texels = [](const std::vector<std::string>& sets) {
+    auto runner = startLesson(kLesson, sets, 640, 480);
+    runner->renderFrame();
+    return reportValue(*runner, "cascade_texels_per_pixel").get<std::vector<double>>();
+  };
+  for (const double t : texels({})) EXPECT_GT(t, 1.0);
+  const std::vector<double> one = texels({"cascades.count=1"});
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_LT(one[0], 0.3);
+  const std::vector<double> uniform = texels({"cascades.split=uniform"});
+  ASSERT_EQ(uniform.size(), 4u);
+  EXPECT_LT(uniform[0], 1.0);
+  EXPECT_GT(uniform[1], 10.0 * uniform[0]);
 }
 
 TEST(Lesson12, EveryMapInputRendersTheMapsAgain) {
