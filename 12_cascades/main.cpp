@@ -151,9 +151,24 @@ class Cascades final : public Lesson {
       } else if (f.view != atlas_.view || f.projection != atlas_projection_) {
         mask = ++moved_frames_ % update_() == 0 ? all : 1;
       }
+      // Live, while the eye is dragged: this frame's points in the maps as they were, then as
+      // they are (the shimmer of the user's own motion, not of the path).
+      const bool live = f.input_moving && mask != 0 && atlas_.view != glm::mat4(0.0f);
+      if (live) {
+        auto timing = f.measure.pass("shimmer");
+        readStates(f, atlas_, atlas_.view, live_before_);
+      }
       if (mask != 0) {
         auto timing = f.measure.pass("shadow");
         renderAtlas(f, atlas_, f.view, mask);
+      }
+      if (live) {
+        auto timing = f.measure.pass("shimmer");
+        readStates(f, atlas_, f.view, live_after_);
+        const auto [counted, flips] = countFlips(live_before_, live_after_);
+        live_shimmer_pct_ =
+            counted > 0 ? 100.0 * static_cast<double>(flips) / static_cast<double>(counted) : 0.0;
+        live_frames_ += 1;
       }
       f.measure.count("shadow_map_renders", mask != 0 ? 1 : 0);
       f.measure.count("cascade_renders", std::popcount(static_cast<unsigned>(mask)));
@@ -213,6 +228,9 @@ class Cascades final : public Lesson {
     json.value("shimmer_steps", kShimmerSteps);
     json.value("shimmer_pct", off_() ? 0.0 : shimmer_pct_);
     json.value("shimmer_pixels", off_() ? 0LL : shimmer_counted_);
+    // The same, frame to frame, while input moved the eye (a window's drag; 0 frames headless).
+    json.value("shimmer_live_frames", live_frames_);
+    json.value("shimmer_live_pct", live_shimmer_pct_);
   }
 
   void panel(Frame&) override {
@@ -220,6 +238,10 @@ class Cascades final : public Lesson {
         "shimmer: %.4f %% of the sunlit pixels flip between two steps of the "
         "eye (the truth: none)",
         shimmer_pct_);
+    if (live_frames_ > 0) {
+      ImGui::TextWrapped("while you drag: %.4f %% flipped in the last frame the eye moved",
+                         live_shimmer_pct_);
+    }
     std::string slices;
     for (int i = 0; i < used_count_; ++i) {
       char line[128];
@@ -388,57 +410,75 @@ class Cascades final : public Lesson {
     return key.str();
   }
 
+  // The shimmer target: the frame's size, RGBA8, read back as bytes.
+  void ensureStateTarget(const Frame& f) {
+    if (shimmer_target_w_ == f.width && shimmer_target_h_ == f.height) return;
+    shimmer_color_ = Texture::color(f.width, f.height, GL_RGBA8);
+    shimmer_depth_ = Texture::depthStencil(f.width, f.height);
+    shimmer_target_ = std::make_unique<Framebuffer>();
+    shimmer_target_->attachColor(shimmer_color_);
+    shimmer_target_->attachDepthStencil(shimmer_depth_);
+    shimmer_target_->check();
+    shimmer_target_w_ = f.width, shimmer_target_h_ = f.height;
+  }
+
+  // The frame's pixels (the same points of the world) looked up in `atlas`, whose slices are
+  // the eye `cascadeView`'s: per pixel the state, the cascade, its texels per pixel and
+  // whether it faces the sun (scene.frag, VIEW_SHIMMER).
+  void readStates(Frame& f, const Atlas& atlas, const glm::mat4& cascadeView,
+                  std::vector<unsigned char>& rgba) {
+    ensureStateTarget(f);
+    shimmer_target_->bind();
+    glViewport(0, 0, f.width, f.height);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    std::vector<std::string> views = f.params.at("view").choices;
+    views.push_back("shimmer");  // a view of its own, never offered
+    const Program& e = eyeProgram(choiceDefines("view", views, "shimmer"));
+    setEyeUniforms(e, f, atlas, cascadeView);
+    e.set("uViewProjection", f.projection * f.view);
+    f.drawObjects(e, Objects::All);
+    Sampler::unbind(0);
+    rgba.resize(static_cast<size_t>(f.width) * static_cast<size_t>(f.height) * 4);
+    glReadPixels(0, 0, f.width, f.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    f.bindTarget();
+  }
+
+  // Between two readStates: the sunlit points inside the cascades both times, and how many of
+  // them flipped.
+  static std::pair<long long, long long> countFlips(const std::vector<unsigned char>& a,
+                                                    const std::vector<unsigned char>& b) {
+    long long counted = 0, flips = 0;
+    for (size_t p = 0; p + 3 < a.size() && p + 3 < b.size(); p += 4) {
+      if (a[p + 3] < 128 || a[p + 1] == 0 || b[p + 1] == 0) continue;
+      ++counted;
+      if ((a[p] < 128) != (b[p] < 128)) ++flips;
+    }
+    return {counted, flips};
+  }
+
   // The points this frame shows, shadowed or not by the maps of each step of the path: the
   // share of sunlit points whose state flips between two steps, over all steps.
   void measureShimmer(Frame& f) {
     auto timing = f.measure.pass("shimmer");
-    if (shimmer_target_w_ != f.width || shimmer_target_h_ != f.height) {
-      shimmer_color_ = Texture::color(f.width, f.height, GL_RGBA8);
-      shimmer_depth_ = Texture::depthStencil(f.width, f.height);
-      shimmer_target_ = std::make_unique<Framebuffer>();
-      shimmer_target_->attachColor(shimmer_color_);
-      shimmer_target_->attachDepthStencil(shimmer_depth_);
-      shimmer_target_->check();
-      shimmer_target_w_ = f.width, shimmer_target_h_ = f.height;
-    }
     ensureAtlas(path_atlas_);  // its own: the frame's atlas and what it keeps stay as they are
-    const size_t pixels = static_cast<size_t>(f.width) * static_cast<size_t>(f.height);
-    std::vector<unsigned char> last, now(pixels * 4);
+    std::vector<unsigned char> last, now;
     long long flips = 0, counted = 0;
     for (int k = 0; k <= kShimmerSteps; ++k) {
       const glm::mat4 view = stepView(f.view, k);
       // The far cascades follow the eye every cascades.update-th step, as they would frames.
       renderAtlas(f, path_atlas_, view, k % update_() == 0 ? (1 << count_()) - 1 : 1);
-      shimmer_target_->bind();
-      glViewport(0, 0, f.width, f.height);
-      glClearColor(0, 0, 0, 0);
-      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      std::vector<std::string> views = f.params.at("view").choices;
-      views.push_back("shimmer");  // a view of its own, never offered: state and coverage
-      const Program& e = eyeProgram(choiceDefines("view", views, "shimmer"));
-      setEyeUniforms(e, f, path_atlas_, view);
-      e.set("uViewProjection", f.projection * f.view);  // the same pixels, the same points
-      f.drawObjects(e, Objects::All);
-      Sampler::unbind(0);
-      glReadPixels(0, 0, f.width, f.height, GL_RGBA, GL_UNSIGNED_BYTE, now.data());
+      readStates(f, path_atlas_, view, now);
       if (k > 0) {
-        for (size_t p = 0; p < pixels; ++p) {
-          const unsigned char* a = &last[4 * p];
-          const unsigned char* b = &now[4 * p];
-          // Alpha: a surface facing the sun; green: inside the cascades at both steps.
-          if (a[3] < 128 || a[1] == 0 || b[1] == 0) continue;
-          ++counted;
-          if ((a[0] < 128) != (b[0] < 128)) ++flips;
-        }
+        const auto [c, n] = countFlips(last, now);
+        counted += c, flips += n;
       }
       if (k == 0) texelsPerPixel(now);
       std::swap(last, now);
-      now.resize(pixels * 4);
     }
     shimmer_counted_ = counted / kShimmerSteps;
     shimmer_pct_ =
         counted > 0 ? 100.0 * static_cast<double>(flips) / static_cast<double>(counted) : 0.0;
-    f.bindTarget();
   }
 
   // The median texels per pixel of each cascade over the sunlit pixels it shades (the eye's
@@ -477,6 +517,10 @@ class Cascades final : public Lesson {
   double shimmer_pct_ = 0.0;
   long long shimmer_counted_ = 0;
   std::array<double, kMaxCascades> texels_per_pixel_{};
+  // While the eye is dragged: the share of sunlit points the last moving frame flipped.
+  std::vector<unsigned char> live_before_, live_after_;
+  double live_shimmer_pct_ = 0.0;
+  long long live_frames_ = 0;
   Texture shimmer_color_, shimmer_depth_;
   std::unique_ptr<Framebuffer> shimmer_target_;
   int shimmer_target_w_ = 0, shimmer_target_h_ = 0;

@@ -164,6 +164,34 @@ TEST(Lesson12, SnappedSpheresShimmerATenthOfWhatFreeSlicesDo) {
   EXPECT_GT(reportNumber(*snapped_slices, "shimmer_pct"), 5.0 * snapped);
 }
 
+// In a window the shimmer of the user's own drag is measured frame to frame: each frame the
+// eye moves, its points in the maps as they were and as they are. Free slices flip; snapped
+// spheres do not.
+TEST(Lesson12, WhileTheEyeIsDraggedTheShimmerIsMeasuredFrameToFrame) {
+  const auto drag = [](const std::vector<std::string>& sets) {
+    auto runner = startLesson(kLesson, sets, 640, 480);
+    runner->renderFrame();
+    EXPECT_EQ(reportNumber(*runner, "shimmer_live_frames"), 0);
+    runner->setInputMoving(true);
+    double sum = 0.0;
+    for (int i = 1; i <= 4; ++i) {
+      const float x = 0.013f * static_cast<float>(i), z = 8.0f - 0.027f * static_cast<float>(i);
+      EXPECT_EQ(
+          runner->params().assign("camera.pos=" + std::to_string(x) + ",1.7," + std::to_string(z)),
+          "");
+      runner->renderFrame();
+      sum += reportNumber(*runner, "shimmer_live_pct");
+    }
+    EXPECT_EQ(reportNumber(*runner, "shimmer_live_frames"), 4);
+    EXPECT_EQ(runner->glErrors(), 0);
+    return sum / 4.0;
+  };
+  const double free_slices = drag({"cascades.fit=slice", "cascades.snap=false"});
+  const double snapped = drag({});
+  EXPECT_GT(free_slices, 0.01);
+  EXPECT_LE(snapped, free_slices / 10.0) << snapped << " against " << free_slices;
+}
+
 TEST(Lesson12, ErrorStaysWithinTheBoundAtTheDefaultsAndForSunsNoOtherTestUses) {
   for (const std::vector<std::string>& sets : {std::vector<std::string>{},
                                                {"scene=street_low_sun"},
