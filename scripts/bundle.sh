@@ -131,7 +131,8 @@ grep -E '^(03_shadow_map_basic|06_dual_texture_8bit) ' "$out/share/shadows/cases
   > "$out/share/shadows/cases_short.txt"
 
 mkdir -p "$out/share/shadows/llvmpipe"
-for csv in shadow_cost pcf_cost 06_dual_texture_8bit 07_multidigit_16bit 08_atmospherics; do
+for csv in shadow_cost pcf_cost 06_dual_texture_8bit 07_multidigit_16bit 08_atmospherics \
+  11_omni_cube 12_cascades; do
   cp "$here/docs/bench_$csv.csv" "$out/share/shadows/llvmpipe/"
 done
 cp "$here/scripts/gpu_check.sh" "$out/"

@@ -1,8 +1,9 @@
 #!/bin/sh
 # The GPU check: one command on a machine that has only the bundle (scripts/bundle.sh) and a
 # GPU driver reached through glvnd. Everything goes into one folder; summary.md says what it
-# found (docs/GPU.md explains every file). At most 7.7 minutes: each step has its own limit
-# (machine 15 s, probe 30 s, views 130 s, studies 110 + 45 s, 06/07 40 + 40 s, 08 50 s).
+# found (docs/GPU.md explains every file). At most 7.8 minutes: each step has its own limit
+# (machine 15 s, probe 30 s, views 130 s, studies 95 + 40 s, 06/07 40 + 40 s, 08 40 s,
+# 11's six and layered passes 10 + 10 s, 12 15 s).
 #
 #   ./gpu_check.sh [--out DIR] [--device N] [--backend NAME] [--short]
 #
@@ -137,18 +138,19 @@ log "views: done at $(elapsed) s"
 
 # ---------------------------------------------------------------- the studies and sweeps
 # Each bench_sweep run has a time limit, so the whole check stays under 8 minutes.
-sweep() {  # sweep NAME LIMIT_S [bench_sweep flags]
-  name=$1 limit=$2
+sweep() {  # sweep NAME LIMIT_S [bench_sweep flags]; into $SWEEP_DIR (default bench/)
+  name=$1 limit=$2 dir=${SWEEP_DIR:-$out/bench}
   shift 2
+  mkdir -p "$dir"
   if [ $short = 1 ]; then
     set -- "$@" --size 160x120 --frames 1 --rounds 1
   fi
   # shellcheck disable=SC2086
-  timeout "$limit" "$bin/bench_sweep" --lesson "$name" --out-dir "$out/bench" --no-plot \
-    $device_args "$@" > "$out/bench/$name.log" 2>&1
+  timeout "$limit" "$bin/bench_sweep" --lesson "$name" --out-dir "$dir" --no-plot \
+    $device_args "$@" > "$dir/$name.log" 2>&1
   status=$?
-  [ $status = 124 ] && echo "TIMEOUT after $limit s" >> "$out/bench/$name.log"
-  log "bench $name: exit $status at $(elapsed) s"
+  [ $status = 124 ] && echo "TIMEOUT after $limit s" >> "$dir/$name.log"
+  log "bench ${dir#"$out/"}/$name: exit $status at $(elapsed) s"
   case $status in
     0) ;;
     124) studies_timed_out="$studies_timed_out $name" ;;
@@ -164,13 +166,24 @@ if [ $short = 1 ]; then
   sweep pcf_cost 60 '--benchmark_filter=/cubes/'
   sweep 06_dual_texture_8bit 60 '--benchmark_filter=/dueling/size:256/.*/depth_bits:24/'
   sweep 08_atmospherics 60 '--benchmark_filter=/slices:(16|32)/downsample:2/'
+  cube='/bulb/size:64/store:distance/filter:nearest/'
+  cascades='/street/count:(1|4)/fit:sphere/snap:true/'
 else
-  sweep shadow_cost 110
-  sweep pcf_cost 45
+  sweep shadow_cost 95
+  sweep pcf_cost 40
   sweep 06_dual_texture_8bit 40
   sweep 07_multidigit_16bit 40
-  sweep 08_atmospherics 50
+  sweep 08_atmospherics 40
+  cube='/bulb/size:512/'
+  cascades='/street/'
 fi
+# Lesson 11's cube rendered every frame as six passes and as one layered pass (a geometry
+# shader: desktop GL), each a sweep of its own; lesson 12's cascades, by count, fit and snap.
+for passes in six layered; do
+  SWEEP_DIR=$out/bench/11_$passes sweep 11_omni_cube 10 "--benchmark_filter=$cube" \
+    --set cube.passes=$passes
+done
+sweep 12_cascades 15 "--benchmark_filter=$cascades"
 
 # ---------------------------------------------------------------- what failed
 # Every FAIL line of the views, a flavour_views that ended otherwise than by its verdict (a
@@ -352,6 +365,42 @@ target_row() {  # target_row TEXT LIMIT GPU_RATIO LLVMPIPE_RATIO
     done
     echo
   done
+  echo "## 11's cube: six passes against one layered pass (bench/11_six/, bench/11_layered/)"
+  echo
+  echo "The \`bulb\` preset, cube rendered every frame; frame ms (shadow pass ms). On llvmpipe the"
+  echo "layered pass was the dearer (101 M against 77 M instructions a frame, 11's README)."
+  echo
+  echo "| cube.store | cube.filter | six passes | one layered pass | llvmpipe, six passes |"
+  echo "|---|---|---|---|---|"
+  for store in distance depth; do
+    for filter in nearest linear; do
+      at="cube.store=$store cube.filter=$filter"
+      six=$out/bench/11_six/11_omni_cube.csv layered=$out/bench/11_layered/11_omni_cube.csv
+      [ "$(median "$six" frame_ms $at)" = nan ] && [ "$(median "$layered" frame_ms $at)" = nan ] && continue
+      echo "| $store | $filter | $(median "$six" frame_ms $at) ($(median "$six" pass_ms.shadow $at)) | $(median "$layered" frame_ms $at) ($(median "$layered" pass_ms.shadow $at)) | $(median "$share/llvmpipe/bench_11_omni_cube.csv" frame_ms cube.size=512 $at) |"
+    done
+  done
+  echo
+  echo "## 12's cascades (bench/12_cascades.csv)"
+  echo
+  echo "The \`street\` preset, cascades rendered every frame; the shimmer is the same on any GPU that"
+  echo "draws the same pictures (it is a count of pixels), so it checks the pictures too."
+  echo
+  echo "| cascades.count | fit | snap | frame ms | shadow pass ms | shimmer % | llvmpipe frame ms | llvmpipe shimmer % |"
+  echo "|---|---|---|---|---|---|---|---|"
+  for n in 1 2 3 4; do
+    for fit in slice sphere; do
+      for snap in false true; do
+        csv=$out/bench/12_cascades.csv
+        at="scene=street cascades.count=$n cascades.fit=$fit cascades.snap=$snap"
+        ms=$(median "$csv" frame_ms $at)
+        [ "$ms" = nan ] && continue
+        ref=$share/llvmpipe/bench_12_cascades.csv
+        echo "| $n | $fit | $snap | $ms | $(median "$csv" pass_ms.shadow $at) | $(median "$csv" shimmer_pct $at) | $(median "$ref" frame_ms $at) | $(median "$ref" shimmer_pct $at) |"
+      done
+    done
+  done
+  echo
   echo "## 08's slices (bench/08_atmospherics.csv)"
   echo
   echo "| air.slices | air.downsample | frame ms | air pass ms | air rel. RMSE | llvmpipe frame ms |"
