@@ -74,6 +74,20 @@ class OmniCube final : public Lesson {
                        "constant bias, world units along the ray (distance) or the axis (depth)");
     normal_ = p.addFloat("bias.normal", 0.25f, 0.0f, 4.0f,
                          "normal offset, in texels of the face at the fragment's distance");
+    // Lesson 04's other two methods, in each face's pass.
+    faces_ = p.addChoice("bias.faces", {"front", "back"}, "front",
+                         "which faces of the closed casters go into the cube: back faces only is "
+                         "lesson 04's default (seed 003, slide 70)",
+                         kDirtyShadowMap);
+    slope_ = p.addFloat("bias.slope", 0.0f, 0.0f, 8.0f,
+                        "glPolygonOffset factor in each face's pass (slope-scaled; the depth "
+                        "store only: a written gl_FragDepth is not offset)",
+                        kDirtyShadowMap);
+    slope_.param().inactive = [](const Params& ps) -> std::string {
+      return ps.at("cube.store").is("depth") ? ""
+                                             : "the distance store writes gl_FragDepth, which "
+                                               "polygon offset does not move";
+    };
     dimming_ = p.addFloat("dimming", 0.4f, 0.0f, 1.0f,
                           "light left in shadow: dimming + (1-dimming)*shade");
     {
@@ -291,15 +305,27 @@ class OmniCube final : public Lesson {
     f.measure.count("cube_faces_unseen", unseen);
   }
 
+  // Lesson 04's bias in a face's pass: which faces go in, and the slope-scaled offset.
+  PassState passBias() const {
+    PassState state;
+    state.cull = faces_.name() == "back";
+    state.cull_face = GL_FRONT;
+    state.polygon_offset = slope_() > 0.0f;
+    state.offset_factor = slope_();
+    return state;
+  }
+
   void renderFace(Frame& f, int i, const glm::mat4& face) {
     auto timing = f.measure.pass("shadow");
     framebuffers_[static_cast<size_t>(i)]->bind();
     glViewport(0, 0, cube_size_, cube_size_);
+    passBias().apply();
     const Program& d = depth_programs_.get({store_.defines()});
     d.set("uLightViewProjection", face);
     d.set("uLightPos", light_);
     d.set("uCubeFar", far_);
     f.drawObjects(d, Objects::Casters, skip_() ? &face : nullptr);
+    PassState{}.apply();
   }
 
   // Every face the frame needs in one pass: the geometry shader copies each triangle into the
@@ -315,7 +341,9 @@ class OmniCube final : public Lesson {
     d.set("uFaceMask", mask);
     d.set("uLightPos", light_);
     d.set("uCubeFar", far_);
+    passBias().apply();
     f.drawObjects(d, Objects::Casters);
+    PassState{}.apply();
   }
 
   bool anyCasterIn(const Frame& f, const glm::mat4& face) const {
@@ -395,7 +423,7 @@ class OmniCube final : public Lesson {
     drawn_.fill(false);  // the cube holds nothing current while the paraboloids are used
     if (stale) {
       const Program& d = paraboloid_programs_.get({});
-      PassState state;
+      PassState state = passBias();
       state.clip_plane = true;  // the other hemisphere
       for (int h = 0; h < 2; ++h) {
         auto timing = f.measure.pass("shadow");
@@ -433,7 +461,8 @@ class OmniCube final : public Lesson {
   ChoiceParam<> bits_, filter_, passes_, method_;
   IntParam size_;
   BoolParam seamless_, skip_, cache_, off_;
-  FloatParam bias_, normal_, dimming_;
+  FloatParam bias_, normal_, slope_, dimming_;
+  ChoiceParam<> faces_;
   ProgramVariants depth_programs_, layered_programs_, paraboloid_programs_, eye_programs_,
       cross_programs_;
   Sampler compare_nearest_, compare_linear_, raw_;
