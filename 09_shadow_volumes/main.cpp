@@ -46,7 +46,8 @@ class ShadowVolumes final : public Lesson {
   }
   std::vector<std::string> scenes() const override {
     std::vector<std::string> s = scenePresets();
-    s.insert(s.end(), {"eye_in_shadow", "fence"});
+    // And 11's omni bulb, as more casters crowd around it (bench: omni_volumes_vs_cube).
+    s.insert(s.end(), {"eye_in_shadow", "fence", "bulb", "bulb_crowd", "bulb_throng"});
     return s;
   }
 

@@ -40,7 +40,9 @@ class OmniCube final : public Lesson {
   std::vector<std::string> debugViews() const override {
     return {"cube_cross", "face", "face_texels", "distance"};
   }
-  std::vector<std::string> scenes() const override { return {"bulb", "torus_pyramid", "dueling"}; }
+  std::vector<std::string> scenes() const override {
+    return {"bulb", "torus_pyramid", "dueling", "bulb_crowd", "bulb_throng"};
+  }
   // An omni light points nowhere and has no frustum of its own: each face's is fixed at 90°.
   std::vector<std::string> unusedSharedParams() const override {
     return {"light.type", "light.target", "light.fov", "light.extent"};

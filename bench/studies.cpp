@@ -121,6 +121,28 @@ Sweep volumesVsMapsStudy() {
           .study = true};
 }
 
+// Issue 36: an omni light through lesson 11's cube (three face sizes, and the paraboloids) and
+// through lesson 09's volumes, exact for omni lights, scored by the one truth and timed as the
+// casters around the bulb grow from 9 to 33 to 105. Every cube rendered every frame.
+Sweep omniVolumesVsCubeStudy() {
+  Axis technique{"technique", {}};
+  for (const char* size : {"256", "512", "1024"}) {
+    technique.values.push_back(std::string("11_cube") + size +
+                               ":lesson=11_omni_cube shadow.cache=false cube.size=" + size);
+  }
+  technique.values.push_back(
+      "11_paraboloid512:lesson=11_omni_cube shadow.cache=false omni.method=paraboloid");
+  for (const char* method : {"zpass", "zfail"}) {
+    technique.values.push_back(std::string("09_") + method +
+                               ":lesson=09_shadow_volumes volume.method=" + method);
+  }
+  return {.scenes = {"bulb", "bulb_crowd", "bulb_throng"},
+          .axes = {technique},
+          .fixed = {},
+          .plot_metrics = {"false_shadow_pct", "false_lit_pct"},
+          .study = true};
+}
+
 }  // namespace
 
 std::map<std::string, Sweep> studies() {
@@ -130,7 +152,8 @@ std::map<std::string, Sweep> studies() {
           {"precision_far", precisionFarStudy()},
           {"shadow_cost", shadowCostSweep()},
           {"pcf_cost", pcfCostStudy()},
-          {"volumes_vs_maps", volumesVsMapsStudy()}};
+          {"volumes_vs_maps", volumesVsMapsStudy()},
+          {"omni_volumes_vs_cube", omniVolumesVsCubeStudy()}};
 }
 
 }  // namespace shadows::bench

@@ -135,6 +135,31 @@ Scene bulb() {
   return s;
 }
 
+// The bulb's room with `extra` more casters around it (lesson 11 against 09's volumes as the
+// caster count grows): crates on the floor and balls in the air, spread on a golden-angle
+// spiral between 1.8 and 5 units from the bulb, clear of the walls.
+Scene bulbCrowd(int extra) {
+  Scene s = bulb();
+  const float golden = glm::pi<float>() * (3.0f - std::sqrt(5.0f));
+  for (int i = 0; i < extra; ++i) {
+    const float t = (static_cast<float>(i) + 0.5f) / static_cast<float>(extra);
+    const float a = golden * static_cast<float>(i), r = 1.8f + 3.2f * t;
+    const glm::vec3 at(r * std::cos(a), 0.0f, 0.2f + r * std::sin(a) * 0.9f);
+    if (i % 2 == 0) {
+      s.objects.push_back({"crate",
+                           makeBox(glm::vec3(0.18f)),
+                           translate(at + glm::vec3(0, 0.18f, 0)),
+                           {0.7f, 0.35f, 0.3f}});
+    } else {
+      s.objects.push_back({"ball",
+                           makeSphere(0.16f, 16, 8),
+                           translate(at + glm::vec3(0, 0.9f + 0.6f * t, 0)),
+                           {0.5f, 0.8f, 0.4f}});
+    }
+  }
+  return s;
+}
+
 // Lesson 10's planes of interest beside the floor (seed 002, "Playing with Projection
 // Matrices": "ground plane, wall, table top"): receivers that cast nothing, so a map never
 // holds them and only the projection decides how well they are shadowed.
@@ -359,6 +384,10 @@ Scene makeScene(const std::string& preset) {
                          {0.7f, 0.35f, 0.3f}});
     s.light = {false, {-3.0f, 6.5f, 2.0f}, {0.3f, 0.0f, -0.3f}, 60.0f, 10.0f, 2.0f, 16.0f};
     s.camera = {{4.6f, 2.4f, 2.6f}, {1.9f, 0.1f, -0.5f}, 45.0f, 0.1f, 100.0f};
+  } else if (preset == "bulb_crowd") {
+    s = bulbCrowd(24);
+  } else if (preset == "bulb_throng") {
+    s = bulbCrowd(96);
   } else if (preset == "bulb") {
     s = bulb();
   } else if (preset == "street") {
