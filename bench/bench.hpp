@@ -78,9 +78,6 @@ struct Result {
   std::string renderer;
 };
 
-// The number `name` at the top level of a report JsonWriter wrote, or none (tables.cpp).
-std::optional<double> topLevelNumber(const std::string& json, const std::string& name);
-
 // ---- configs.cpp, studies.cpp
 
 // The studies across lessons (studies.cpp), by name.

@@ -110,14 +110,5 @@ TEST(Table, AFieldNotMeasuredIsAnEmptyCellNotAZero) {
   EXPECT_EQ(t.cell(0, "status"), "failed: timed out");
 }
 
-TEST(Table, AReportNumberIsReadFromTheTopLevelOnly) {
-  const std::string json =
-      "{\n  \"a\": {\"shimmer_pct\": 9},\n  \"note\": \"\\\"shimmer_pct\\\": 8\",\n"
-      "  \"shimmer_pct\": 0.25,\n  \"x\": [1, 2]\n}";
-  EXPECT_EQ(topLevelNumber(json, "shimmer_pct"), 0.25);
-  EXPECT_EQ(topLevelNumber(json, "missing"), std::nullopt);
-  EXPECT_EQ(topLevelNumber("{\"a\": {\"b\": 1}}", "b"), std::nullopt);
-}
-
 }  // namespace
 }  // namespace shadows::bench

@@ -13,38 +13,6 @@
 
 namespace shadows::bench {
 
-std::optional<double> topLevelNumber(const std::string& json, const std::string& name) {
-  // A key of the top level is a string at depth 1 followed by a colon (JsonWriter writes
-  // "name": value); strings are skipped whole, escapes included.
-  std::string key = "\"";
-  key += name;
-  key += "\":";
-  int depth = 0;
-  bool in_string = false;
-  for (size_t i = 0; i < json.size(); ++i) {
-    const char ch = json[i];
-    if (in_string) {
-      if (ch == '\\')
-        ++i;
-      else if (ch == '"')
-        in_string = false;
-      continue;
-    }
-    if (ch == '{' || ch == '[') ++depth;
-    if (ch == '}' || ch == ']') --depth;
-    if (ch != '"') continue;
-    if (depth == 1 && json.compare(i, key.size(), key) == 0) {
-      const char* start = json.c_str() + i + key.size();
-      char* end = nullptr;
-      const double v = std::strtod(start, &end);
-      if (end != start) return v;
-      return std::nullopt;
-    }
-    in_string = true;
-  }
-  return std::nullopt;
-}
-
 namespace {
 
 // The CPU the times were taken on, for the plot's title: "2 cores, Intel(R) Xeon(R) ...".
