@@ -386,19 +386,14 @@ class Cascades final : public Lesson {
     return v;
   }
 
-  // Everything the shimmer depends on: the eye, the frame's size, every setting of the lesson.
+  // Everything the shimmer depends on, as text: when it changes, the path is measured again.
   std::string shimmerKey(const Frame& f) const {
+    // Every setting but the view shown (the eye and the sun are settings too), so a setting
+    // added later cannot be forgotten here; and the frame's size.
     std::ostringstream key;
-    for (int c = 0; c < 4; ++c) {
-      for (int r = 0; r < 4; ++r) key << f.view[c][r] << ',' << f.projection[c][r] << ',';
-    }
-    key << f.width << 'x' << f.height << ' ' << f.light.direction.x << ',' << f.light.direction.y
-        << ',' << f.light.direction.z;
-    for (const char* name :
-         {"cascades.count", "cascades.split", "cascades.lambda", "cascades.fit", "cascades.snap",
-          "cascades.update", "cascades.blend", "cascades.size", "cascades.far", "cascades.filter",
-          "bias.normal", "bias.depth", "shimmer.path", "scene"}) {
-      key << ' ' << f.params.at(name).text();
+    key << f.width << 'x' << f.height;
+    for (const Param& p : f.params.all()) {
+      if (p.name != "view") key << ' ' << p.text();
     }
     // Where the objects are (a lesson may move one): their matrices' bytes, hashed (FNV-1a).
     std::uint64_t hash = 1469598103934665603ULL;
