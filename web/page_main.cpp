@@ -131,6 +131,15 @@ extern "C" EMSCRIPTEN_KEEPALIVE void shadows_screenshot() {
   if (g_runner) g_runner->window().requestScreenshot();
 }
 
+// A parameter set as the panel sets it ("view=maps"), for the page tests: every view of a lesson
+// in one page, the truth traced once for the truth and error views. Returns "" or the command
+// line's one line for a bad assignment.
+extern "C" EMSCRIPTEN_KEEPALIVE const char* shadows_set(const char* assignment) {
+  static std::string said;
+  said = g_runner ? g_runner->params().assign(assignment) : "the lesson has not started";
+  return said.c_str();
+}
+
 int main(int argc, char** argv) {
   const std::string name = shadows::registeredLessons().at(0);
   const auto make = [&](shadows::RunOptions options) {
