@@ -6,15 +6,15 @@
 # lesson's frames with their shadow.off baseline frames, so after the warm-ups the frames
 # alternate: baseline, frame, ... llvmpipe rasterizes in the calling thread (LP_NUM_THREADS=0),
 # so a pass's shading lands in its own dump. Prints the median of the 3 steady frames and of
-# the 3 baselines, and their ratio; then each pass's median, in the order drawn, and what the
-# frame spent outside its passes. Needs a build (cmake --build build --target LESSON) and
+# the 3 baselines, and their ratio; then each pass's median, in the order drawn (the first
+# includes what the frame did before it), and what the frame spent after its last pass. Needs a build (cmake --build build --target LESSON) and
 # valgrind.
 #
 # Usage: scripts/frame_instructions.sh LESSON [lesson flags...]
 #   e.g. scripts/frame_instructions.sh 05_pcf_dithered --size 640x480 --set pcf.mode=grid
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-[[ $# -ge 1 ]] || { sed -n 2,12p "${BASH_SOURCE[0]}" >&2; exit 2; }
+[[ $# -ge 1 ]] || { sed -n 2,14p "${BASH_SOURCE[0]}" >&2; exit 2; }
 lesson=$1
 shift
 binary=$repo/build/$lesson
@@ -61,6 +61,6 @@ def passes(fs):
     if len({len(f[0]) for f in fs}) != 1: return 'passes differ between frames'
     cols = [statistics.median(f[0][k] for f in fs) / 1e6 for k in range(len(fs[0][0]))]
     tail = statistics.median(f[1] for f in fs) / 1e6
-    return ' + '.join(f'{c:.2f}' for c in cols) + f' M, {tail:.2f} M outside them'
+    return ' + '.join(f'{c:.2f}' for c in cols) + f' M, {tail:.2f} M after them'
 print(f"passes in the order drawn: frame {passes(lit)}; shadow.off frame {passes(base)}")
 PY

@@ -58,7 +58,7 @@ def once(old, new):
     assert src.count(old) == 1, old
     src = src.replace(old, new)
 once('#include <learnopengl/model.h>\n', '#include <chrono>\n#include <cstdio>\n')
-# Every glFinish of the harness is this function's: callgrind dumps before it, so the depth
+# Every glFinish of the harness is this function's: callgrind dumps after it, so the depth
 # pass and the lit pass each land in a dump of their own.
 once('// settings\n', 'extern "C" __attribute__((noinline)) void harness_finish() { glFinish(); }\n\n// settings\n')
 once('glfwMakeContextCurrent(window);', 'glfwMakeContextCurrent(window);\n    glfwSwapInterval(0);')
@@ -115,7 +115,8 @@ for _, trigger, ir in sorted(dumps):
         segments = []
 steady = [f for f in frames[2:] if len(f) == 4]
 if not steady or len(steady) != len(frames) - 2:
-    sys.exit('learnopengl_side_by_side: no steady frame of four parts dumped; run with --frames 4 or more')
+    sys.exit(f'learnopengl_side_by_side: {len(steady)} of {len(frames) - 2} frames after the first two '
+           'were dumped in four parts (--frames must be 4 or more)')
 m = lambda xs: statistics.median(xs)
 print(m([sum(f) for f in steady]), m([f[1] for f in steady]), m([f[2] for f in steady]),
       m([f[0] + f[3] for f in steady]))
@@ -132,7 +133,8 @@ for name in compare fetch gather best one; do
   esac
   out=$("$repo/scripts/frame_instructions.sh" 05_pcf_dithered "${flags[@]}")
   ours[$name]=$(sed -nE 's/^frame ([0-9.]+) M.*/\1/p' <<<"$out")
-  passes[$name]=$(sed -nE 's/^passes in the order drawn: frame ([0-9. +]+) M, ([0-9.]+) M outside.*/\1 \2/p' <<<"$out")
+  passes[$name]=$(sed -nE 's/^passes in the order drawn: frame ([0-9. +]+) M, ([0-9.]+) M after them.*/\1 \2/p' <<<"$out")
+  [[ -n ${passes[$name]} ]] || { echo "learnopengl_side_by_side: 05 ($name): no passes in: $out" >&2; exit 1; }
   [[ $name == compare ]] && off=$(sed -nE '1s/.*shadow.off frame ([0-9.]+) M,.*/\1/p' <<<"$out")
 done
 M() { python3 -c "print(f'{$1 / 1e6:.2f}')"; }

@@ -131,13 +131,23 @@ extern "C" EMSCRIPTEN_KEEPALIVE void shadows_screenshot() {
   if (g_runner) g_runner->window().requestScreenshot();
 }
 
-// A parameter set as the panel sets it ("view=maps"), for the page tests: every view of a lesson
-// in one page, the truth traced once for the truth and error views. Returns "" or the command
-// line's one line for a bad assignment.
+// A parameter set from the page's JavaScript ("view=maps"), for the page tests: every view of a
+// lesson in one page, the truth traced once for the truth and error views. It goes through
+// the parser as --set does, not the panel's locks (an exercise's), which a test does not need.
+// Returns "" or the command line's one line for a bad assignment.
 extern "C" EMSCRIPTEN_KEEPALIVE const char* shadows_set(const char* assignment) {
   static std::string said;
   said = g_runner ? g_runner->params().assign(assignment) : "the lesson has not started";
   return said.c_str();
+}
+
+// A parameter's value as --set takes it ("" for an unknown name): the page tests read back
+// what they set.
+extern "C" EMSCRIPTEN_KEEPALIVE const char* shadows_get(const char* name) {
+  static std::string value;
+  const shadows::Param* p = g_runner ? g_runner->params().find(name) : nullptr;
+  value = p != nullptr ? p->text() : "";
+  return value.c_str();
 }
 
 int main(int argc, char** argv) {

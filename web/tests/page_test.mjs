@@ -127,14 +127,21 @@ async function screenshot(page, name, settle = 3) {
   return decodePng(png);
 }
 
-// What every page must show: frames, no exception, no GL error, no failure line.
-async function checkClean(page, what) {
+// How far a page's tallies are (checkClean's `since`: what came before is another view's).
+const tallies = async (page) => ({
+  ...(await page.evaluate('({frames: shadowsPage.frames, glErrors: shadowsPage.glErrors, errors: shadowsPage.errors.length})')),
+  exceptions: page.exceptions.length, console: page.console.length,
+});
+
+// What every page must show: frames, no exception, no GL error, no failure line; with
+// `since` (tallies()), only what came after it.
+async function checkClean(page, what, since = { frames: 0, glErrors: 0, errors: 0, exceptions: 0, console: 0 }) {
   const state = await page.evaluate('({frames: shadowsPage.frames, glErrors: shadowsPage.glErrors, errors: shadowsPage.errors})');
-  if (state.frames < 3) fail(`${what}: ${state.frames} frames rendered`);
-  if (state.glErrors !== 0) fail(`${what}: ${state.glErrors} GL errors`);
-  for (const e of state.errors) fail(`${what}: page error: ${e}`);
-  for (const e of page.exceptions) fail(`${what}: exception: ${e}`);
-  for (const c of page.console) {
+  if (state.frames - since.frames < 3) fail(`${what}: ${state.frames - since.frames} frames rendered`);
+  if (state.glErrors !== since.glErrors) fail(`${what}: ${state.glErrors - since.glErrors} GL errors`);
+  for (const e of state.errors.slice(since.errors)) fail(`${what}: page error: ${e}`);
+  for (const e of page.exceptions.slice(since.exceptions)) fail(`${what}: exception: ${e}`);
+  for (const c of page.console.slice(since.console)) {
     if (c.type === 'error' || /GL error|GL_INVALID|WebGL: /.test(c.text)) fail(`${what}: console ${c.type}: ${c.text}`);
   }
 }
@@ -158,14 +165,19 @@ try {
       const traces = 'Module.shadowsTruthMs.length + (Module.shadowsTruthProgress >= 0 ? 1 : 0)';
       const tracedBefore = await page.evaluate(traces);
       for (const view of group) {
+        const since = view === group[0] ? undefined : await tallies(page);
         if (view !== group[0]) {
           const said = await page.evaluate(`Module.ccall('shadows_set', 'string', ['string'], ['view=${view}'])`);
           if (said !== '') fail(`view=${view}: the page refused it: ${said}`);
+          const now = await page.evaluate(`Module.ccall('shadows_get', 'string', ['string'], ['view'])`);
+          if (now !== view) fail(`view=${view}: the page's view is ${now} after the switch`);
         }
         const web = await screenshot(page, `${lesson}.${view}.web.png`);
-        await checkClean(page, `view=${view}`);
+        await checkClean(page, `view=${view}`, since);
         // Jobs answered, and one running: none without the truth, and a view's change is no
-        // reason to trace again.
+        // reason to trace again. A page traces once its settings have rested 300 ms
+        // (window.cpp): the count is read after longer than that.
+        if (since) await new Promise((r) => setTimeout(r, 500));
         const tracedNow = await page.evaluate(traces);
         if (!traced && tracedNow !== 0) fail(`view=${view}&no-truth: the page traced ${tracedNow} truths`);
         if (traced && tracedNow !== tracedBefore) fail(`view=${view}: a change of view traced the truth again (${tracedBefore} then ${tracedNow} jobs)`);
@@ -198,10 +210,9 @@ try {
   // (1024x700: the picture about 680x600 beside the panel's 340-pixel column).
   {
     const page = await open(browser, `${server.url}${lesson}.html`, { width: 1024, height: 700 });
-    // 08's slices cost SwiftShader about a second a frame at this size.
     // A frame of the page costs SwiftShader half a second or more at this size (08: 1.7 s): it
-    // waits for the frames it needs (three drawn; the drag's two steps each draw one, and one
-    // after it; a screenshot is the frame after it is asked for).
+    // waits for the frames it needs (three drawn; the drag's two, and one after it; a
+    // screenshot is the frame after it is asked for).
     await page.waitFor('shadowsPage.frames >= 3 || shadowsPage.errors.length > 0', 60000);
     const before = await screenshot(page, `${lesson}.page.png`, 0);
     const canvasBox = `(() => { const r = document.getElementById('canvas').getBoundingClientRect(); return {x: r.x, y: r.y, w: r.width, h: r.height, page: document.documentElement.clientWidth}; })()`;
@@ -212,13 +223,17 @@ try {
     // The orbit camera: a drag across the picture, left of the panel's column, turns the view.
     const at = (fx, fy) => ({ x: box.x + fx * box.w, y: box.y + fy * box.h });
     await page.send('Input.dispatchMouseEvent', { type: 'mouseMoved', ...at(0.2, 0.5) });
-    await page.send('Input.dispatchMouseEvent', { type: 'mousePressed', button: 'left', buttons: 1, clickCount: 1, ...at(0.2, 0.5) });
-    for (let i = 1; i <= 2; ++i) {
-      await page.send('Input.dispatchMouseEvent', { type: 'mouseMoved', button: 'left', buttons: 1, ...at(0.2 + 0.1 * i, 0.5) });
+    // The window reads the mouse once a frame (window.cpp): the frame after the press starts
+    // the drag, the frame after the move turns the view.
+    const nextFrame = async () => {
       const frames = await page.evaluate('shadowsPage.frames');
       await page.waitFor(`shadowsPage.frames > ${frames}`, 60000);
-    }
-    await page.send('Input.dispatchMouseEvent', { type: 'mouseReleased', button: 'left', buttons: 0, clickCount: 1, ...at(0.4, 0.5) });
+    };
+    await page.send('Input.dispatchMouseEvent', { type: 'mousePressed', button: 'left', buttons: 1, clickCount: 1, ...at(0.2, 0.5) });
+    await nextFrame();
+    await page.send('Input.dispatchMouseEvent', { type: 'mouseMoved', button: 'left', buttons: 1, ...at(0.36, 0.5) });
+    await nextFrame();
+    await page.send('Input.dispatchMouseEvent', { type: 'mouseReleased', button: 'left', buttons: 0, clickCount: 1, ...at(0.36, 0.5) });
     const after = await screenshot(page, `${lesson}.page.orbited.png`, 1);
     const turned = pixelsDiffering(before, after, 8);
     if (lesson === kShellLesson) {
