@@ -150,7 +150,7 @@ const server = await serve(site);
 const browser = await launch();
 try {
   // Every view against the native gles30 picture of the same configuration, in two pages, each
-  // view switched as the panel switches it (shadows_set): the views without the truth in one
+  // view switched in place (shadows_set, as --set parses it): the views without the truth in one
   // (?no-truth: its worker would only take a core), the truth and error views in the other,
   // which share one trace. A page load costs SwiftShader about a second, a trace three or four.
   const isTraced = (view) => view === 'truth' || view === 'error';
@@ -165,8 +165,9 @@ try {
       const traces = 'Module.shadowsTruthMs.length + (Module.shadowsTruthProgress >= 0 ? 1 : 0)';
       const tracedBefore = await page.evaluate(traces);
       for (const view of group) {
-        const since = view === group[0] ? undefined : await tallies(page);
+        let since;  // the first view's page is its own; a switched view's, since the switch
         if (view !== group[0]) {
+          since = await tallies(page);
           const said = await page.evaluate(`Module.ccall('shadows_set', 'string', ['string'], ['view=${view}'])`);
           if (said !== '') fail(`view=${view}: the page refused it: ${said}`);
           const now = await page.evaluate(`Module.ccall('shadows_get', 'string', ['string'], ['view'])`);
