@@ -1,7 +1,9 @@
 #include "core/scene.hpp"
 
+#include <algorithm>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <initializer_list>
 #include <stdexcept>
 
 namespace shadows {
@@ -10,9 +12,22 @@ namespace {
 
 constexpr float kPi = glm::pi<float>();
 
+// A flat face's unwrap: its points in the face's own plane, a at the origin, u along a->b.
+void unwrapFlat(MeshData& m, std::initializer_list<glm::vec3> points) {
+  const glm::vec3 a = *points.begin();
+  const glm::vec3 u = glm::normalize(*(points.begin() + 1) - a);
+  glm::vec3 n(0.0f);
+  for (auto p = points.begin() + 2; p != points.end() && glm::length(n) == 0.0f; ++p) {
+    n = glm::cross(u, *p - a);
+  }
+  const glm::vec3 v = glm::normalize(glm::cross(glm::normalize(n), u));
+  for (glm::vec3 p : points) m.unwrap.push_back({glm::dot(p - a, u), glm::dot(p - a, v)});
+}
+
 void addQuad(MeshData& m, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, glm::vec3 n) {
   const auto base = static_cast<std::uint32_t>(m.vertices.size());
   for (glm::vec3 p : {a, b, c, d}) m.vertices.push_back({p, n});
+  unwrapFlat(m, {a, b, c, d});
   for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) m.indices.push_back(base + i);
 }
 
@@ -27,7 +42,31 @@ MeshData makeGrid(int uSegments, int vSegments, Surface surface) {
       m.vertices.push_back(surface(u, v));
     }
   }
+  // The unwrap: (u, v) times the longest line of the grid along each (the equator, say).
   const auto row = static_cast<std::uint32_t>(uSegments + 1);
+  float length_u = 0.0f, length_v = 0.0f;
+  for (int j = 0; j <= vSegments; ++j) {
+    float along = 0.0f;
+    for (int i = 0; i < uSegments; ++i) {
+      along +=
+          glm::distance(m.vertices[j * row + i].position, m.vertices[j * row + i + 1].position);
+    }
+    length_u = std::max(length_u, along);
+  }
+  for (int i = 0; i <= uSegments; ++i) {
+    float along = 0.0f;
+    for (int j = 0; j < vSegments; ++j) {
+      along +=
+          glm::distance(m.vertices[j * row + i].position, m.vertices[(j + 1) * row + i].position);
+    }
+    length_v = std::max(length_v, along);
+  }
+  for (int j = 0; j <= vSegments; ++j) {
+    for (int i = 0; i <= uSegments; ++i) {
+      m.unwrap.push_back({length_u * static_cast<float>(i) / static_cast<float>(uSegments),
+                          length_v * static_cast<float>(j) / static_cast<float>(vSegments)});
+    }
+  }
   for (int j = 0; j < vSegments; ++j) {
     for (int i = 0; i < uSegments; ++i) {
       const auto a = static_cast<std::uint32_t>(j) * row + static_cast<std::uint32_t>(i);
@@ -95,6 +134,7 @@ MeshData makePyramid(float halfBase, float height) {
     const glm::vec3 n = glm::normalize(glm::cross(b - a, apex - a));
     const auto base = static_cast<std::uint32_t>(m.vertices.size());
     for (glm::vec3 p : {a, b, apex}) m.vertices.push_back({p, n});
+    unwrapFlat(m, {a, b, apex});
     for (std::uint32_t k : {0u, 1u, 2u}) m.indices.push_back(base + k);
   }
   addQuad(m, corners[3], corners[2], corners[1], corners[0], {0, -1, 0});

@@ -17,6 +17,11 @@ struct Vertex {
 struct MeshData {
   std::vector<Vertex> vertices;
   std::vector<std::uint32_t> indices;
+  // Per vertex, where it lies when the surface is laid out flat (object units along the
+  // surface): a face's own plane, a grid's (u, v) scaled by its lengths. Lesson 15's light
+  // map cuts charts along it (math/light_map_atlas.hpp); beside Vertex, so no vertex buffer
+  // grows.
+  std::vector<glm::vec2> unwrap;
 };
 
 MeshData makePlane(float halfX, float halfZ);  // in y = 0, normal +y

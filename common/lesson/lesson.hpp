@@ -3,6 +3,7 @@
 // itself (run/) is not included here, so a lesson cannot reach into it.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -45,6 +46,27 @@ struct ErrorState {
   std::shared_ptr<const ErrorPixels> pixels;
 };
 
+// Lesson 15's bake (seed 003: "for each texel, cast ray to each light source"): the truth's
+// own tracer, run over a light map's texels instead of the eye's pixels.
+struct BakeRequest {
+  std::vector<glm::vec3> positions;  // the casters' world triangles, as the bake sees them
+  std::vector<glm::uvec3> triangles;
+  float scene_radius = 0.0f;
+  SurfaceBuffer texels;  // per texel its surface point and normal (position.w < 0: none)
+  TruthLight light;      // an area light: radius and samples a texel
+};
+struct BakeState {
+  enum class Stage { kNone, kRunning, kDone, kFailed, kCancelled };
+  Stage stage = Stage::kNone;
+  std::uint64_t id = 0;   // the request's (its inputs' hash; the disk cache's key)
+  double progress = 0.0;  // [0, 1], of the rows traced
+  bool from_cache = false;
+  double seconds = 0.0;  // the trace's time, this run's (0 when loaded from the cache)
+  long long rays = 0;    // shadow rays the trace casts (texels facing the light x samples)
+  std::string message;   // kFailed: why; else where the cache file is, or why there is none
+  std::shared_ptr<const std::vector<float>> visibility;  // kDone: one value per texel
+};
+
 // What a lesson may ask of the runner that runs it (Frame::runner): the last error measured,
 // and one scene object's placement. Everything else of the runner is out of a lesson's reach.
 class LessonHost {
@@ -57,6 +79,13 @@ class LessonHost {
   virtual void setObjectModel(size_t index, const glm::mat4& model) = 0;
   // The object's matrix as the scene preset placed it, before any setObjectModel.
   virtual const glm::mat4& presetModel(size_t index) const = 0;
+  // Bakes a light map (lesson 15): starts the request unless it is the one already running or
+  // done, and answers from the disk cache when it holds the same inputs. A window bakes on a
+  // thread while frames go on (bakeState() says how far); a headless run waits for it, a page
+  // traces it between two frames. One bake at a time: a new request cancels the running one.
+  virtual void bake(BakeRequest request) = 0;
+  virtual const BakeState& bakeState() const = 0;
+  virtual void cancelBake() = 0;
 
  protected:
   ~LessonHost() = default;
@@ -169,6 +198,9 @@ class Lesson {
   // false_shadow_pct, false_lit_pct), this frame's: every figure derived from the truth lives
   // under `error`, which is there exactly when the truth was traced.
   virtual std::vector<ErrorRegion> errorRegions() const { return {}; }
+  // "" or why these settings are refused before anything is drawn (bad input, exit 2; the
+  // panel says it in a window): lesson 15's light map past its memory limit.
+  virtual std::string refusal(const Params&, const Scene&) const { return {}; }
   // Shared parameters (light.fov, light.near, ...) this lesson has no use for: the runner
   // does not offer them.
   virtual std::vector<std::string> unusedSharedParams() const { return {}; }

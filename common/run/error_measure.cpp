@@ -62,6 +62,11 @@ std::string ErrorMeasure::key() const {
       key += value;
     }
   }
+  // A light map finished baking (lesson 15) changes the picture with no parameter moved.
+  const BakeState& bake = r_.host_.bakeState();
+  if (bake.stage != BakeState::Stage::kNone) {
+    key += ";bake=" + std::to_string(bake.id) + "," + std::to_string(static_cast<int>(bake.stage));
+  }
   return key;
 }
 

@@ -164,7 +164,7 @@ std::string Runner::checkConsistency() const {
   if (near != nullptr && far != nullptr && near->f() >= far->f()) {
     return "light.near (" + near->text() + ") must be less than light.far (" + far->text() + ")";
   }
-  return {};
+  return lesson_->refusal(params_, scene());
 }
 
 Light Runner::currentLight() const {

@@ -152,6 +152,14 @@ void SceneHost::setObjectModel(size_t index, const glm::mat4& model) {
   r_.params_.markDirty(kDirtyShadowMap);  // a moved caster moves its shadow
 }
 
+void SceneHost::bake(BakeRequest request) {
+  // A window that runs until closed bakes on a thread; anything that writes what it rendered
+  // (headless, a window's --frames run) waits for the light map first.
+  const bool interactive = !r_.options_.headless && r_.gpu_ && r_.gpu_->window != nullptr &&
+                           r_.gpu_->loop.frames_left < 0;
+  baker_.start(std::move(request), /*wait=*/!interactive);
+}
+
 void SceneHost::drawInset(const Frame& frame, const Texture& depth, float near, float far,
                           bool perspective, bool fullscreen) const {
   const int side = std::max(16, std::min(frame.width, frame.height) / 4);

@@ -7,6 +7,7 @@
 
 #include "core/scene.hpp"
 #include "lesson/lesson.hpp"
+#include "run/light_map_bake.hpp"
 
 namespace shadows {
 
@@ -22,6 +23,9 @@ class SceneHost final : public LessonHost {
   const ErrorState& lastError() const override;
   void setObjectModel(size_t index, const glm::mat4& model) override;
   const glm::mat4& presetModel(size_t index) const override { return preset_models_.at(index); }
+  void bake(BakeRequest request) override;
+  const BakeState& bakeState() const override { return baker_.poll(); }
+  void cancelBake() override { baker_.cancel(); }
 
  private:
   void drawObjects(const Frame& frame, const Program& program, Objects which,
@@ -35,6 +39,7 @@ class SceneHost final : public LessonHost {
   Runner& r_;
   Scene scene_;
   std::vector<glm::mat4> preset_models_;
+  mutable LightMapBaker baker_;  // polled where its state is asked for
 };
 
 }  // namespace shadows

@@ -51,11 +51,26 @@ void ShadowMap::renderCasters(Frame& f, const Program& depthProgram, const PassS
 }
 
 void ShadowMap::renderCasters(Frame& f, const PassState& state, Objects which) {
+  renderCasters(f, depthOnly(), state, which);
+}
+
+void ShadowMap::renderObject(Frame& f, size_t index, const PassState& state) {
+  const Program& program = depthOnly();
+  auto timing = f.measure.pass("shadow");
+  beginRender();
+  state.apply();
+  program.use();
+  program.set("uLightViewProjection", lightViewProjection());
+  f.drawObject(program, index);
+  PassState{}.apply();
+}
+
+const Program& ShadowMap::depthOnly() {
   if (depth_only_.id() == 0) {
     depth_only_ =
         Program(commonShaderDir() / "light_depth.vert", commonShaderDir() / "depth_only.frag");
   }
-  renderCasters(f, depth_only_, state, which);
+  return depth_only_;
 }
 
 bool ShadowMap::drawDepthView(const Frame& frame) const {

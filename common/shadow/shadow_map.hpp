@@ -35,6 +35,9 @@ class ShadowMap {
   void renderCasters(Frame& frame, const Program& depthProgram, const PassState& state = {},
                      Objects which = Objects::Casters) const;
   void renderCasters(Frame& frame, const PassState& state = {}, Objects which = Objects::Casters);
+  // Pass 1 with one object alone (lesson 15's hybrid: the caster that moves, while the bake
+  // holds the others), timed as "shadow", with renderCasters' own program.
+  void renderObject(Frame& frame, size_t index, const PassState& state = {});
   // Kilgard's "depth buffer from the light's point of view": when frame.mode is
   // "light_depth", draws the map over the whole target and returns true.
   bool drawDepthView(const Frame& frame) const;
@@ -64,6 +67,7 @@ class ShadowMap {
  private:
   // Binds the map's framebuffer, sets the viewport and clears the depth.
   void beginRender() const;
+  const Program& depthOnly();  // renderCasters' program, compiled on first use
   LightView light_;
   Texture texture_;
   std::unique_ptr<Framebuffer> framebuffer_;

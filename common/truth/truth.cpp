@@ -183,7 +183,8 @@ Truth::Truth(const std::vector<glm::vec3>& positions, const std::vector<glm::uve
 
 Truth::~Truth() = default;
 
-std::vector<float> Truth::visibility(const SurfaceBuffer& surface, const TruthLight& light) const {
+std::vector<float> Truth::visibility(const SurfaceBuffer& surface, const TruthLight& light,
+                                     TraceControl* control) const {
   checkSurface(surface);
   glm::vec3 axis(0.0f);  // unit light axis; zero for a point light without a direction
   if (glm::length(light.direction) > 0.0f) axis = glm::normalize(light.direction);
@@ -279,11 +280,13 @@ std::vector<float> Truth::visibility(const SurfaceBuffer& surface, const TruthLi
       std::max(1, std::min(static_cast<int>(std::thread::hardware_concurrency()), h));
   auto work = [&](int first) {
     for (int y = first; y < h; y += threads) {
+      if (control != nullptr && control->cancel.load()) return;
       for (int x = 0; x < w; ++x) {
         const std::size_t i =
             static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x);
         out[i] = pixel(i);
       }
+      if (control != nullptr) ++control->rows_done;
     }
   };
   if (threads == 1) {

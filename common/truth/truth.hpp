@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <glm/glm.hpp>
@@ -63,6 +64,13 @@ bool countedPixel(const SurfaceBuffer& s, std::size_t i, const TruthLight& light
 // Value meaning "not counted" (no surface, or facing away from the light) in visibility images.
 inline constexpr float kNotCounted = -1.0f;
 
+// A long trace (lesson 15's bake) watched and stopped from another thread: rows finished so
+// far, and a flag that makes the trace return at the next row (its image then incomplete).
+struct TraceControl {
+  std::atomic<long long> rows_done{0};
+  std::atomic<bool> cancel{false};
+};
+
 class Truth {
  public:
   // World-space triangle soup; sceneRadius sets the ray offset (relative, not absolute).
@@ -75,7 +83,8 @@ class Truth {
   // Fraction of the light seen from each pixel's surface, in [0,1]; kNotCounted where the
   // pixel has no surface or its normal does not face the light (N.L <= 0).
   // Deterministic: the same inputs give bit-identical output, whatever the thread count.
-  std::vector<float> visibility(const SurfaceBuffer& surface, const TruthLight& light) const;
+  std::vector<float> visibility(const SurfaceBuffer& surface, const TruthLight& light,
+                                TraceControl* control = nullptr) const;
 
   // N.L per pixel (0 where not counted); the weight of shade_mae (error_metrics.cpp: no
   // Embree, a browser's build has it too). `grazing`, if given, gets the pixels that face the

@@ -1,0 +1,232 @@
+#include "run/light_map_bake.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <utility>
+#include <vector>
+
+#include "truth/truth_job.hpp"
+
+namespace shadows {
+
+struct LightMapBaker::Running {
+  TruthJob job;
+  TraceControl control;
+  std::future<std::vector<float>> result;
+  std::chrono::steady_clock::time_point began = std::chrono::steady_clock::now();
+  std::string cache_path;
+};
+
+namespace {
+
+std::string hex(std::uint64_t id) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(id));
+  return text;
+}
+
+bool terminal() {
+  return isatty(STDERR_FILENO) != 0;
+}
+
+// The cache keeps the newest bakes up to 256 MB: `bake_at=current` bakes again at every move.
+void trimCache(const std::filesystem::path& dir) {
+  constexpr std::uintmax_t kKeep = 256u << 20;
+  std::error_code ec;
+  std::vector<std::pair<std::filesystem::file_time_type, std::filesystem::path>> bakes;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("lightmap-", 0) == 0 && entry.path().extension() == ".trace") {
+      bakes.emplace_back(entry.last_write_time(ec), entry.path());
+    }
+  }
+  std::sort(bakes.begin(), bakes.end(),
+            [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::uintmax_t total = 0;
+  for (const auto& [time, path] : bakes) {
+    total += std::filesystem::file_size(path, ec);
+    if (total > kKeep) std::filesystem::remove(path, ec);
+  }
+}
+
+}  // namespace
+
+LightMapBaker::LightMapBaker() = default;
+
+LightMapBaker::~LightMapBaker() {
+  cancel();
+}
+
+std::string LightMapBaker::cacheDirectory() {
+#ifdef __EMSCRIPTEN__
+  return {};
+#else
+  if (const char* dir = std::getenv("SHADOWS_CACHE"); dir != nullptr && *dir != '\0') {
+    return std::string(dir) == "off" ? std::string() : std::string(dir);
+  }
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg == '/') {
+    return std::string(xdg) + "/shadows";
+  }
+  if (const char* home = std::getenv("HOME"); home != nullptr && *home == '/') {
+    return std::string(home) + "/.cache/shadows";
+  }
+  return {};
+#endif
+}
+
+void LightMapBaker::start(BakeRequest request, bool wait) {
+  TruthJob job;
+  job.positions = std::move(request.positions);
+  job.triangles = std::move(request.triangles);
+  job.scene_radius = request.scene_radius;
+  job.surface = std::move(request.texels);
+  job.light = request.light;
+  const std::uint64_t id = job.id();
+  if (state_.id == id &&
+      (state_.stage == BakeState::Stage::kRunning || state_.stage == BakeState::Stage::kDone)) {
+    return;  // running or done for these very inputs (a failed or cancelled one starts again)
+  }
+  cancel();
+  state_ = BakeState{};
+  state_.id = id;
+  state_.stage = BakeState::Stage::kRunning;
+  const int k =
+      std::max(1, static_cast<int>(std::lround(std::sqrt(std::max(job.light.samples, 1)))));
+  // The texels the tracer casts rays from: on a surface that faces the light (countedPixel).
+  long long texels = 0;
+  for (size_t i = 0; i < job.surface.position.size(); ++i) {
+    glm::vec3 p, n;
+    float ndotl = 0.0f;
+    texels += countedPixel(job.surface, i, job.light, p, n, ndotl) ? 1 : 0;
+  }
+  state_.rays = texels * (job.light.radius > 0.0f ? k * k : 1);
+
+  auto running = std::make_unique<Running>();
+  const std::string dir = cacheDirectory();
+  if (!dir.empty()) {
+    running->cache_path = dir + "/lightmap-" + hex(id) + ".trace";
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(running->cache_path, ec)) {
+      try {
+        TruthTrace trace = readTruthTrace(running->cache_path);
+        if (trace.job_id == id && trace.visibility.size() == job.surface.position.size()) {
+          state_.stage = BakeState::Stage::kDone;
+          state_.from_cache = true;
+          state_.progress = 1.0;
+          state_.message = "loaded from " + running->cache_path;
+          state_.visibility =
+              std::make_shared<const std::vector<float>>(std::move(trace.visibility));
+          return;
+        }
+      } catch (const std::exception&) {
+        // A damaged or foreign file: bake again and write it over.
+      }
+    }
+  } else {
+    state_.message = "no cache (SHADOWS_CACHE=off, or no home directory)";
+  }
+  running->job = std::move(job);
+#ifdef __EMSCRIPTEN__
+  (void)wait;
+  running_ = std::move(running);
+  std::promise<std::vector<float>> answer;
+  try {
+    answer.set_value(makeTruthTracer(running_->job)->trace(running_->job).visibility);
+  } catch (...) {
+    answer.set_exception(std::current_exception());
+  }
+  running_->result = answer.get_future();
+  finish();
+#else
+  Running* r = running.get();
+  r->result = std::async(std::launch::async, [r] {
+    const Truth truth(r->job.positions, r->job.triangles, r->job.scene_radius);
+    return truth.visibility(r->job.surface, r->job.light, &r->control);
+  });
+  running_ = std::move(running);
+  if (!wait) return;
+  while (running_->result.wait_for(std::chrono::milliseconds(250)) != std::future_status::ready) {
+    poll();
+  }
+  finish();
+#endif
+}
+
+const BakeState& LightMapBaker::poll() {
+  if (!running_) return state_;
+  if (running_->result.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+    finish();
+    return state_;
+  }
+  const int rows = std::max(running_->job.surface.height, 1);
+  state_.progress = static_cast<double>(running_->control.rows_done.load()) / rows;
+  const auto now = std::chrono::steady_clock::now();
+  if (terminal() && now - printed_ > std::chrono::milliseconds(500)) {
+    printed_ = now;
+    std::fprintf(stderr, "\rbaking the light map: %3.0f %% (%.1f s)", 100.0 * state_.progress,
+                 std::chrono::duration<double>(now - running_->began).count());
+    std::fflush(stderr);
+  }
+  return state_;
+}
+
+void LightMapBaker::finish() {
+  std::unique_ptr<Running> r = std::move(running_);
+  state_.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - r->began).count();
+  if (terminal() && printed_ != std::chrono::steady_clock::time_point{}) {
+    std::fprintf(stderr, "\r%60s\r", "");  // the progress line goes, the report says the rest
+  }
+  printed_ = {};
+  try {
+    std::vector<float> visibility = r->result.get();
+    if (r->control.cancel.load()) {
+      state_.stage = BakeState::Stage::kCancelled;
+      state_.message = "cancelled";
+      return;
+    }
+    state_.stage = BakeState::Stage::kDone;
+    state_.progress = 1.0;
+    if (!r->cache_path.empty()) {
+      TruthTrace trace;
+      trace.job_id = state_.id;
+      trace.width = r->job.surface.width;
+      trace.height = r->job.surface.height;
+      trace.visibility = visibility;
+      // Written whole, then renamed: a bake cut short leaves no half file behind.
+      std::error_code ec;
+      std::filesystem::create_directories(std::filesystem::path(r->cache_path).parent_path(), ec);
+      const std::string part = r->cache_path + "." + std::to_string(getpid()) + ".part";
+      const std::vector<std::uint8_t> bytes = serializeTruthTrace(trace);
+      std::ofstream out(part, std::ios::binary);
+      out.write(reinterpret_cast<const char*>(bytes.data()),
+                static_cast<std::streamsize>(bytes.size()));
+      out.close();
+      if (out && !ec) std::filesystem::rename(part, r->cache_path, ec);
+      const bool kept = out && !ec;
+      if (!kept) std::filesystem::remove(part, ec);
+      state_.message =
+          kept ? "kept in " + r->cache_path : "not kept: cannot write " + r->cache_path;
+      if (kept) trimCache(std::filesystem::path(r->cache_path).parent_path());
+    }
+    state_.visibility = std::make_shared<const std::vector<float>>(std::move(visibility));
+  } catch (const std::exception& e) {
+    state_.stage = BakeState::Stage::kFailed;
+    state_.message = e.what();
+  }
+}
+
+void LightMapBaker::cancel() {
+  if (!running_) return;
+  running_->control.cancel = true;
+  running_->result.wait();
+  finish();
+}
+
+}  // namespace shadows
