@@ -147,6 +147,18 @@ TEST_F(Cli, ADisplayThatLeadsNowhereFallsBackToHeadless) {
   EXPECT_EQ(lines_naming_it, 1u) << r.output;
 }
 
+TEST_F(Cli, ALightMapPastItsMemoryLimitIsRefusedWithTheLimitNamed) {
+  // Lesson 15's cubes at 128 texels a unit: their floor alone would be 6401 texels wide.
+  const auto r =
+      run("15_light_maps", "--size 64x48 --set scene=cubes --set lightmap.texels_per_unit=128");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("over the limit of 4096 texels a side and 4096 x 4096 in all"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("lower lightmap.texels_per_unit"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("MB"), std::string::npos) << r.output;
+}
+
 TEST_F(Cli, ListParamsListsEverySlider) {
   const Result r = run(kLesson, "--list-params");
   ASSERT_EQ(r.exit_code, 0);

@@ -132,7 +132,7 @@ TEST(ReadmeClaimsFound, EveryLessonThatQuotedNumbersStillHasItsClaims) {
   for (const char* lesson :
        {"03_shadow_map_basic", "04_bias_offset", "05_pcf_dithered", "06_dual_texture_8bit",
         "07_multidigit_16bit", "08_atmospherics", "09_shadow_volumes", "10_plane_optimal",
-        "11_omni_cube", "12_cascades", "13_filterable_maps", "14_soft_shadows"}) {
+        "11_omni_cube", "12_cascades", "13_filterable_maps", "14_soft_shadows", "15_light_maps"}) {
     EXPECT_NE(
         std::find(found.begin(), found.end(), fs::path(SHADOWS_SOURCE_DIR) / lesson / "README.md"),
         found.end())
