@@ -9,6 +9,7 @@ READMEs quote comes from a command anyone can re-run:
   bench/tables.py cost bench/results/shadow_cost.csv
   bench/tables.py pcf bench/results/pcf_cost.csv
   bench/tables.py front bench/results/05_pcf_dithered.csv   # any sweep's CSV: the table under its plot
+  bench/tables.py bake bench/results/15_light_maps.csv       # lesson 15: error against what a bake costs
 """
 import csv
 import statistics
@@ -185,6 +186,28 @@ def front(path):
             print(f"| {name} | {num(r, time):.3g} | " + " | ".join(cells) + " |")
 
 
+def bake(path):
+    """Lesson 15's sweep read against what the bake spends, not the frame (one lookup a pixel
+    whatever was baked): per scene every configuration, fewest rays first, with its atlas and
+    bytes; **bold** where no configuration with fewer rays has less error (the rays' front)."""
+    data = rows(path)
+    for scene in ordered(r["scene"] for r in data):
+        here = sorted((r for r in data if r["scene"] == scene),
+                      key=lambda r: (num(r, "lightmap/bake_rays"), num(r, "vis_mae")))
+        print(f"\n{scene}: fewest rays first (**bold**: on the rays' front)\n")
+        print("| setting | rays | bake s | atlas texels | bytes | vis_mae |")
+        print("|---|---|---|---|---|---|")
+        best = float("inf")
+        for r in here:
+            error = num(r, "vis_mae")
+            on_front = error < best
+            best = min(best, error)
+            text = f"{error:.3g}"
+            print(f"| {r['settings']} | {num(r, 'lightmap/bake_rays') / 1e6:.3g} M | "
+                  f"{num(r, 'lightmap/bake_seconds'):.2g} | {int(num(r, 'lightmap/texels'))} | "
+                  f"{num(r, 'lightmap/bytes') / 1e6:.2g} MB | " + (f"**{text}**" if on_front else text) + " |")
+
+
 if __name__ == "__main__":
     if len(sys.argv) >= 3 and sys.argv[1] == "precision":
         precision(sys.argv[2])
@@ -194,6 +217,8 @@ if __name__ == "__main__":
         pcf(sys.argv[2])
     elif len(sys.argv) >= 3 and sys.argv[1] == "front":
         front(sys.argv[2])
+    elif len(sys.argv) >= 3 and sys.argv[1] == "bake":
+        bake(sys.argv[2])
     elif len(sys.argv) >= 3 and sys.argv[1] == "copy":
         copy(sys.argv[2:])
     else:
