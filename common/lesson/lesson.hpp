@@ -81,8 +81,8 @@ class LessonHost {
   virtual const glm::mat4& presetModel(size_t index) const = 0;
   // Bakes a light map (lesson 15): starts the request unless it is the one already running or
   // done, and answers from the disk cache when it holds the same inputs. A window bakes on a
-  // thread while frames go on (bakeState() says how far); a headless run waits for it, a page
-  // traces it between two frames. One bake at a time: a new request cancels the running one.
+  // thread while frames go on (bakeState() says how far), a page in Web Workers; a headless
+  // run waits for it. One bake at a time: a new request cancels the running one.
   virtual void bake(BakeRequest request) = 0;
   virtual const BakeState& bakeState() const = 0;
   virtual void cancelBake() = 0;

@@ -168,6 +168,13 @@ const ErrorState& ErrorMeasure::measure() {
   return truth_.error();
 }
 
+// Rendering the truth's inputs may have started a light-map bake (lesson 15, a view such as
+// `truth` that draws none of the lesson's own frames): the picture is about to change, so the
+// window traces once the bake is in.
+bool ErrorMeasure::bakeBegan() const {
+  return r_.host_.bakeState().stage == BakeState::Stage::kRunning;
+}
+
 void ErrorMeasure::install(TruthResult result) {
   truth_.install(std::move(result), key());
   r_.exercise_.judge();
@@ -177,7 +184,9 @@ void ErrorMeasure::install(TruthResult result) {
 
 void ErrorMeasure::begin() {
   if (truth_.running() || !haveTruth()) return;
-  truth_.thread_job = std::async(std::launch::async, &traceTruth, gatherInputs());
+  TruthInputs inputs = gatherInputs();
+  if (bakeBegan()) return;
+  truth_.thread_job = std::async(std::launch::async, &traceTruth, std::move(inputs));
 }
 
 bool ErrorMeasure::poll() {
@@ -198,6 +207,7 @@ double ErrorMeasure::progress() const {
 void ErrorMeasure::begin() {
   if (truth_.running() || !haveTruth()) return;
   auto inputs = std::make_shared<TruthInputs>(gatherInputs());
+  if (bakeBegan()) return;
   if (postTruthJob(serializeTruthJob(inputs->job))) {
     truth_.page_job = std::move(inputs);
   } else {

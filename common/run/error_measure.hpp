@@ -32,6 +32,7 @@ class ErrorMeasure {
  private:
   TruthInputs gatherInputs();  // render thread: what traceTruth needs of the GPU
   void install(TruthResult result);
+  bool bakeBegan() const;  // a light-map bake runs (lesson 15): trace once it is in
 
   Runner& r_;
   TruthMeasure truth_;

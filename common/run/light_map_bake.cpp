@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -21,6 +22,7 @@ struct LightMapBaker::Running {
   std::future<std::vector<float>> result;
   std::chrono::steady_clock::time_point began = std::chrono::steady_clock::now();
   std::string cache_path;
+  bool page = false;  // traced by the page's bake workers: no future, poll() takes the answer
 };
 
 namespace {
@@ -133,7 +135,12 @@ void LightMapBaker::start(BakeRequest request, bool wait) {
   }
   running->job = std::move(job);
 #ifdef __EMSCRIPTEN__
-  (void)wait;
+  // The page's bake workers, while frames go on; where it has none (or must wait), this thread.
+  if (!wait && postBakeJob(serializeTruthJob(running->job))) {
+    running->page = true;
+    running_ = std::move(running);
+    return;
+  }
   running_ = std::move(running);
   std::promise<std::vector<float>> answer;
   try {
@@ -160,6 +167,27 @@ void LightMapBaker::start(BakeRequest request, bool wait) {
 
 const BakeState& LightMapBaker::poll() {
   if (!running_) return state_;
+#ifdef __EMSCRIPTEN__
+  if (running_->page) {
+    PageTraceAnswer answer = takeBakeTrace();
+    if (answer.state == PageTraceAnswer::State::kNone) {
+      state_.progress = std::max(bakeTraceProgress(), 0.0);
+      return state_;
+    }
+    std::promise<std::vector<float>> result;
+    if (answer.state == PageTraceAnswer::State::kFailed) {
+      result.set_exception(std::make_exception_ptr(
+          std::runtime_error("the page's bake workers failed (see the console)")));
+    } else {
+      TruthTrace trace = parseTruthTrace(answer.trace_bytes);
+      if (trace.job_id != state_.id) return state_;  // a replaced bake's answer
+      result.set_value(std::move(trace.visibility));
+    }
+    running_->result = result.get_future();
+    finish();
+    return state_;
+  }
+#endif
   if (running_->result.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
     finish();
     return state_;
@@ -224,6 +252,12 @@ void LightMapBaker::finish() {
 
 void LightMapBaker::cancel() {
   if (!running_) return;
+  if (running_->page) {  // the workers finish it; a later bake's post replaces it there
+    running_.reset();
+    state_.stage = BakeState::Stage::kCancelled;
+    state_.message = "cancelled";
+    return;
+  }
   running_->control.cancel = true;
   running_->result.wait();
   finish();

@@ -1,6 +1,7 @@
 // Lesson 15's bake behind LessonHost::bake: the truth's tracer over a light map's texels, on a
 // thread with its progress and a cancel (Truth's TraceControl), or from the disk cache, keyed
-// by the hash of every input (TruthJob::id). A page traces it on its main thread.
+// by the hash of every input (TruthJob::id). A page bakes in Web Workers of its own
+// (postBakeJob, web/truth/page.mjs), or on its main thread where it has none.
 #pragma once
 
 #include <chrono>

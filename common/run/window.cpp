@@ -198,8 +198,10 @@ bool RunnerWindow::frame() {
       const bool resting = now - changed_at > std::chrono::milliseconds(300);
       r_.setInputMoving(ImGui::IsAnyItemActive() ||
                         (moved_at && now - *moved_at <= std::chrono::milliseconds(300)));
+      // Not while a light map bakes (lesson 15): the picture is about to change.
+      const bool baking = r_.host_.bakeState().stage == BakeState::Stage::kRunning;
       if (r_.options_.truth && resting && key != r_.errors_.truth().key() &&
-          !r_.errors_.truth().running() && !ImGui::IsAnyItemActive()) {
+          !r_.errors_.truth().running() && !ImGui::IsAnyItemActive() && !baking) {
         r_.errors_.begin();
       }
       // The panel's "shadow: N x the frame without it": one frame in 32 is rendered again,

@@ -81,6 +81,10 @@ struct PageTraceAnswer {
 PageTraceAnswer takeTruthTrace();
 // The running job's progress in [0, 1], or -1 when none runs.
 double truthTraceProgress();
+// The same for lesson 15's light-map bakes, in workers of their own (LightMapBaker).
+bool postBakeJob(const std::vector<std::uint8_t>& job_bytes);
+PageTraceAnswer takeBakeTrace();
+double bakeTraceProgress();
 #endif
 
 // The job's and the trace's bytes (little-endian, 4-byte fields; web/truth/README.md).

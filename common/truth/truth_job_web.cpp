@@ -60,6 +60,25 @@ EM_JS(int, shadows_take_truth_trace_js, (unsigned char** out), {
 EM_JS(double, shadows_truth_progress_js, (), {
   return typeof Module.shadowsTruthProgress === 'number' ? Module.shadowsTruthProgress : -1;
 });
+EM_JS(int, shadows_post_bake_job_js, (const unsigned char* job, int size), {
+  if (typeof Module.shadowsPostBakeJob !== 'function') return 0;
+  return Module.shadowsPostBakeJob(HEAPU8.slice(job, job + size)) ? 1 : 0;
+});
+EM_JS(int, shadows_take_bake_trace_js, (unsigned char** out), {
+  const answer = typeof Module.shadowsTakeBakeTrace === 'function' ? Module.shadowsTakeBakeTrace() : null;
+  if (answer === null) return -1;
+  if (!answer.trace) {
+    console.error('shadows: the bake worker failed: ' + answer.error);
+    return -2;
+  }
+  const at = _malloc(answer.trace.length);
+  HEAPU8.set(answer.trace, at);
+  HEAPU32[out >> 2] = at;
+  return answer.trace.length;
+});
+EM_JS(double, shadows_bake_progress_js, (), {
+  return typeof Module.shadowsBakeProgress === 'number' ? Module.shadowsBakeProgress : -1;
+});
 EM_JS(int, shadows_truth_installed_js, (), {
   return typeof Module.shadowsTraceTruth === 'function' ? 1 : 0;
 });
@@ -105,9 +124,10 @@ bool postTruthJob(const std::vector<std::uint8_t>& job_bytes) {
   return shadows_post_truth_job_js(job_bytes.data(), static_cast<int>(job_bytes.size())) != 0;
 }
 
-PageTraceAnswer takeTruthTrace() {
+namespace {
+PageTraceAnswer takeAnswer(int (*take)(unsigned char**)) {
   unsigned char* at = nullptr;
-  const int size = shadows_take_truth_trace_js(&at);
+  const int size = take(&at);
   PageTraceAnswer answer;
   if (size == -1) return answer;
   if (size < 0) {
@@ -118,6 +138,23 @@ PageTraceAnswer takeTruthTrace() {
   answer.trace_bytes.assign(at, at + size);
   std::free(at);
   return answer;
+}
+}  // namespace
+
+bool postBakeJob(const std::vector<std::uint8_t>& job_bytes) {
+  return shadows_post_bake_job_js(job_bytes.data(), static_cast<int>(job_bytes.size())) != 0;
+}
+
+PageTraceAnswer takeBakeTrace() {
+  return takeAnswer(&shadows_take_bake_trace_js);
+}
+
+double bakeTraceProgress() {
+  return shadows_bake_progress_js();
+}
+
+PageTraceAnswer takeTruthTrace() {
+  return takeAnswer(&shadows_take_truth_trace_js);
 }
 
 double truthTraceProgress() {

@@ -164,8 +164,9 @@ try {
     const page = await open(browser, `${server.url}${lesson}.html?size=${kSize}&hide-panel&view=${group[0]}${traced ? '' : '&no-truth'}`);
     try {
       // The truth views show the page's truth once its worker has traced it (sliders at rest).
+      // Lesson 15 bakes its light map in workers of its own first: the views wait for it.
       await page.waitFor(traced ? 'shadowsPage.truths >= 1 || shadowsPage.errors.length + shadowsPage.notices.length > 0'
-                                : 'shadowsPage.frames >= 5 || shadowsPage.errors.length > 0', 240000);
+                                : '(shadowsPage.frames >= 5 && !Module.shadowsBakeBusy) || shadowsPage.errors.length > 0', 240000);
       const traces = 'Module.shadowsTruthMs.length + (Module.shadowsTruthProgress >= 0 ? 1 : 0)';
       const tracedBefore = await page.evaluate(traces);
       for (const view of group) {

@@ -7,6 +7,8 @@
 //    when none runs; Module.shadowsTruthMs: each answered job's time (web/bench.mjs).
 //  - Module.shadowsTraceTruth(bytes): the job traced on this thread (the job's bytes in, the
 //    trace's out), for what must wait for it (a page without workers, an output asked for).
+//  - Module.shadowsPostBakeJob(bytes) / shadowsTakeBakeTrace() / shadowsBakeProgress: the same
+//    for lesson 15's light-map bakes, in workers of their own.
 import { joinRows, parseJob, serializeTrace, traceTruth } from './truth.mjs';
 
 // Bands a job is cut into per worker: small enough that the workers finish together (a sky
@@ -22,6 +24,33 @@ export function installTruth(Module) {
   Module.shadowsTruthProgress = -1;
   Module.shadowsTruthMs = [];
   const count = Math.max(1, Math.min(globalThis.navigator?.hardwareConcurrency || 2, 8));
+  const truth = pool(count, (progress) => { Module.shadowsTruthProgress = progress; },
+                     (ms) => Module.shadowsTruthMs.push(ms));
+  if (!truth) return Module;
+  Module.shadowsPostTruthJob = truth.post;
+  Module.shadowsTakeTruthTrace = truth.take;
+  // Lesson 15's light-map bakes: a pool of their own (made on the first bake), so a bake and
+  // the error's truth run side by side. shadowsBakeBusy: posted, and not taken yet.
+  let bake = null;
+  Module.shadowsBakeProgress = -1;
+  Module.shadowsBakeBusy = false;
+  Module.shadowsPostBakeJob = (bytes) => {
+    bake ??= pool(count, (progress) => { Module.shadowsBakeProgress = progress; }, () => {});
+    if (!bake) return false;
+    Module.shadowsBakeBusy = true;
+    return bake.post(bytes);
+  };
+  Module.shadowsTakeBakeTrace = () => {
+    const taken = bake ? bake.take() : null;
+    if (taken) Module.shadowsBakeBusy = false;
+    return taken;
+  };
+  return Module;
+}
+
+// `count` workers tracing one job at a time in bands of rows; a job posted replaces the one
+// running. null where the page cannot start workers.
+function pool(count, onProgress, onAnswered) {
   const workers = [];
   try {
     for (let k = 0; k < count; ++k) {
@@ -30,7 +59,7 @@ export function installTruth(Module) {
   } catch (e) {
     console.warn('shadows: no truth worker (' + e + '): the page traces on its main thread');
     for (const worker of workers) worker.terminate();
-    return Module;
+    return null;
   }
 
   let answer = null, failure = null;
@@ -38,7 +67,7 @@ export function installTruth(Module) {
   const finish = (result) => {
     answer = result;
     running = null;
-    Module.shadowsTruthProgress = -1;
+    onProgress(-1);
   };
   const handOut = (worker) => {
     if (!running || running.next >= running.job.height) return;
@@ -56,12 +85,12 @@ export function installTruth(Module) {
       }
       running.bands.push(band);
       running.done += band.y1 - band.y0;
-      Module.shadowsTruthProgress = running.done / running.job.height;
+      onProgress(running.done / running.job.height);
       if (running.done < running.job.height) {
         handOut(worker);
         return;
       }
-      Module.shadowsTruthMs.push(performance.now() - running.postedAt);
+      onAnswered(performance.now() - running.postedAt);
       finish({ trace: serializeTrace(running.job, joinRows(running.job, running.bands)) });
     };
     // A worker that could not load its modules (or died) answers every job with the reason.
@@ -71,25 +100,26 @@ export function installTruth(Module) {
       finish({ error: failure });
     };
   }
-  Module.shadowsPostTruthJob = (bytes) => {
-    answer = null;
-    if (failure) {
-      answer = { error: failure };
+  return {
+    post: (bytes) => {
+      answer = null;
+      if (failure) {
+        answer = { error: failure };
+        return true;
+      }
+      ++generation;
+      const job = parseJob(bytes);
+      const rows = Math.max(1, Math.ceil(job.height / (workers.length * kBandsPerWorker)));
+      running = { job, rows, next: 0, done: 0, bands: [], postedAt: performance.now() };
+      onProgress(0);
+      for (const worker of workers) worker.postMessage({ generation, job: bytes });  // copied
+      for (const worker of workers) handOut(worker);
       return true;
-    }
-    ++generation;
-    const job = parseJob(bytes);
-    const rows = Math.max(1, Math.ceil(job.height / (workers.length * kBandsPerWorker)));
-    running = { job, rows, next: 0, done: 0, bands: [], postedAt: performance.now() };
-    Module.shadowsTruthProgress = 0;
-    for (const worker of workers) worker.postMessage({ generation, job: bytes });  // copied
-    for (const worker of workers) handOut(worker);
-    return true;
+    },
+    take: () => {
+      const taken = answer;
+      answer = null;
+      return taken;
+    },
   };
-  Module.shadowsTakeTruthTrace = () => {
-    const taken = answer;
-    answer = null;
-    return taken;
-  };
-  return Module;
 }
