@@ -179,6 +179,14 @@ void Runner::drawPanel(Frame& frame) {
       ImGui::TextDisabled("error: measuring...");
     }
   }
+  // A light map baking (lesson 15): the scene is drawn unbaked until it is in, and the truth
+  // waits for it. Up here, where the sliders do not push it out of sight.
+  if (const BakeState& bake = host_.bakeState(); bake.stage == BakeState::Stage::kRunning) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("baking the light map: %.0f%% (drawn unbaked until then)",
+                       100.0 * bake.progress);
+    ImGui::PopStyleColor();
+  }
   // The lesson's exercises, one a choice: its goal, each figure now, met or not, on the last
   // truth measured, under the error it is judged by.
   if (const std::vector<Exercise> all = lesson_->exercises(); !all.empty() && options_.truth) {
