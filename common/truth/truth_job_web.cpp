@@ -39,17 +39,21 @@ EM_JS(int, shadows_trace_truth_js, (const unsigned char* job, int size, unsigned
   return trace.length;
 });
 
-// The worker's side (web/truth/page.mjs): post a copy of the job; take the answer as malloc'ed
-// bytes at *out (its size), -1 while none is there, -2 when the worker failed.
-EM_JS(int, shadows_post_truth_job_js, (const unsigned char* job, int size), {
-  if (typeof Module.shadowsPostTruthJob !== 'function') return 0;
-  return Module.shadowsPostTruthJob(HEAPU8.slice(job, job + size)) ? 1 : 0;
+// The workers' side (web/truth/page.mjs), for one of its two pools: `bake` 0 the truth's
+// (Module.shadowsPostTruthJob, ...), 1 lesson 15's bakes (Module.shadowsPostBakeJob, ...).
+// Post a copy of the job; take the answer as malloc'ed bytes at *out (its size), -1 while none
+// is there, -2 when the workers failed.
+EM_JS(int, shadows_post_job_js, (int bake, const unsigned char* job, int size), {
+  const post = bake ? Module.shadowsPostBakeJob : Module.shadowsPostTruthJob;
+  if (typeof post !== 'function') return 0;
+  return post(HEAPU8.slice(job, job + size)) ? 1 : 0;
 });
-EM_JS(int, shadows_take_truth_trace_js, (unsigned char** out), {
-  const answer = typeof Module.shadowsTakeTruthTrace === 'function' ? Module.shadowsTakeTruthTrace() : null;
+EM_JS(int, shadows_take_trace_js, (int bake, unsigned char** out), {
+  const take = bake ? Module.shadowsTakeBakeTrace : Module.shadowsTakeTruthTrace;
+  const answer = typeof take === 'function' ? take() : null;
   if (answer === null) return -1;
   if (!answer.trace) {
-    console.error('shadows: the truth worker failed: ' + answer.error);
+    console.error('shadows: the ' + (bake ? 'bake' : 'truth') + ' worker failed: ' + answer.error);
     return -2;
   }
   const at = _malloc(answer.trace.length);
@@ -57,27 +61,9 @@ EM_JS(int, shadows_take_truth_trace_js, (unsigned char** out), {
   HEAPU32[out >> 2] = at;
   return answer.trace.length;
 });
-EM_JS(double, shadows_truth_progress_js, (), {
-  return typeof Module.shadowsTruthProgress === 'number' ? Module.shadowsTruthProgress : -1;
-});
-EM_JS(int, shadows_post_bake_job_js, (const unsigned char* job, int size), {
-  if (typeof Module.shadowsPostBakeJob !== 'function') return 0;
-  return Module.shadowsPostBakeJob(HEAPU8.slice(job, job + size)) ? 1 : 0;
-});
-EM_JS(int, shadows_take_bake_trace_js, (unsigned char** out), {
-  const answer = typeof Module.shadowsTakeBakeTrace === 'function' ? Module.shadowsTakeBakeTrace() : null;
-  if (answer === null) return -1;
-  if (!answer.trace) {
-    console.error('shadows: the bake worker failed: ' + answer.error);
-    return -2;
-  }
-  const at = _malloc(answer.trace.length);
-  HEAPU8.set(answer.trace, at);
-  HEAPU32[out >> 2] = at;
-  return answer.trace.length;
-});
-EM_JS(double, shadows_bake_progress_js, (), {
-  return typeof Module.shadowsBakeProgress === 'number' ? Module.shadowsBakeProgress : -1;
+EM_JS(double, shadows_progress_js, (int bake), {
+  const progress = bake ? Module.shadowsBakeProgress : Module.shadowsTruthProgress;
+  return typeof progress === 'number' ? progress : -1;
 });
 EM_JS(int, shadows_truth_installed_js, (), {
   return typeof Module.shadowsTraceTruth === 'function' ? 1 : 0;
@@ -120,14 +106,16 @@ bool truthTracerAvailable() {
   return shadows_truth_installed_js() != 0;
 }
 
-bool postTruthJob(const std::vector<std::uint8_t>& job_bytes) {
-  return shadows_post_truth_job_js(job_bytes.data(), static_cast<int>(job_bytes.size())) != 0;
+namespace {
+constexpr int kTruthPool = 0, kBakePool = 1;  // shadows_*_js's `bake`
+
+bool postJob(int pool, const std::vector<std::uint8_t>& job_bytes) {
+  return shadows_post_job_js(pool, job_bytes.data(), static_cast<int>(job_bytes.size())) != 0;
 }
 
-namespace {
-PageTraceAnswer takeAnswer(int (*take)(unsigned char**)) {
+PageTraceAnswer takeAnswer(int pool) {
   unsigned char* at = nullptr;
-  const int size = take(&at);
+  const int size = shadows_take_trace_js(pool, &at);
   PageTraceAnswer answer;
   if (size == -1) return answer;
   if (size < 0) {
@@ -141,24 +129,28 @@ PageTraceAnswer takeAnswer(int (*take)(unsigned char**)) {
 }
 }  // namespace
 
-bool postBakeJob(const std::vector<std::uint8_t>& job_bytes) {
-  return shadows_post_bake_job_js(job_bytes.data(), static_cast<int>(job_bytes.size())) != 0;
-}
-
-PageTraceAnswer takeBakeTrace() {
-  return takeAnswer(&shadows_take_bake_trace_js);
-}
-
-double bakeTraceProgress() {
-  return shadows_bake_progress_js();
+bool postTruthJob(const std::vector<std::uint8_t>& job_bytes) {
+  return postJob(kTruthPool, job_bytes);
 }
 
 PageTraceAnswer takeTruthTrace() {
-  return takeAnswer(&shadows_take_truth_trace_js);
+  return takeAnswer(kTruthPool);
 }
 
 double truthTraceProgress() {
-  return shadows_truth_progress_js();
+  return shadows_progress_js(kTruthPool);
+}
+
+bool postBakeJob(const std::vector<std::uint8_t>& job_bytes) {
+  return postJob(kBakePool, job_bytes);
+}
+
+PageTraceAnswer takeBakeTrace() {
+  return takeAnswer(kBakePool);
+}
+
+double bakeTraceProgress() {
+  return shadows_progress_js(kBakePool);
 }
 
 }  // namespace shadows
