@@ -6,7 +6,8 @@
 // or a backslash, `..` in any spelling (`/../`, `%2e%2e`, `..%2f`) get 400; a file outside the
 // site, also through a symbolic link, is not found (404); a method other than GET and HEAD gets
 // 405. `/` and any folder serve their index.html (a folder named without its slash is
-// redirected to it, so the page's relative links work), with the type its extension says.
+// redirected to it, relatively, so the page's relative links work and the redirect stays on the
+// site), with the type its extension says.
 import fs from 'node:fs';
 import http from 'node:http';
 import path from 'node:path';
@@ -68,7 +69,10 @@ export async function serve(root, port = 0, hide = null) {
       if (stat.isDirectory()) {
         if (!rel.endsWith('/')) {
           const query = req.url.slice(req.url.split(/[?#]/, 1)[0].length);
-          const location = (rel + '/').split('/').map(encodeURIComponent).join('/') + query;
+          // Relative to the folder's own address (`./name/`): never `//host/`, however many
+          // slashes the request had (an open redirect), and a site under a prefix keeps it.
+          const name = rel.split('/').filter((part) => part !== '').pop() ?? '';
+          const location = `./${encodeURIComponent(name)}/${query}`;
           return answer(req, res, 301, 'moved', { Location: location });
         }
         file = await fs.promises.realpath(path.join(file, 'index.html'));

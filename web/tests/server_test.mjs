@@ -7,7 +7,7 @@
 //  - `..` in every spelling (`/../`, `%2e%2e`, `..%2f`, `..%5c`), and symbolic links inside the
 //    site to a file or folder outside it: never the file outside;
 //  - `/` and a folder serve their index.html as text/html, a folder without its slash is
-//    redirected to it; .html .js .mjs .wasm .md .png .json .css .data each get their type;
+//    redirected to it (relatively: `//sub` never leaves the site); .html .js .mjs .wasm .md .png .json .css .data each get their type;
 //  - the command line: a port that is no port (exit 2), a port in use (exit 1), no site or a
 //    folder without index.html (exit 2) each say so in one line, with no stack trace and no
 //    address announced.
@@ -143,9 +143,34 @@ const head = await request(server, '/', 'HEAD');
 if (head.status !== 200 || media(head) !== 'text/html' || head.body !== '') {
   fail(`HEAD /: ${head.status ?? head.error} ${head.headers?.['content-type']}, not text/html without a body`);
 }
-const redirect = await request(server, '/sub?x=1');
-if (redirect.status !== 301 || redirect.headers.location !== '/sub/?x=1') {
-  fail(`GET /sub: ${redirect.status ?? redirect.error} to ${redirect.headers?.location}, not 301 to /sub/?x=1`);
+// A folder's redirect is relative to the folder's own address (`./sub/`), so it stays on this
+// site whatever the request's path: `//sub` or `/%2fsub` must never send a browser to the host
+// `sub` (`Location: //sub/`, issue 53), and a site served under a prefix keeps its prefix.
+for (const [target, location] of [['/sub?x=1', './sub/?x=1'], ['//sub', './sub/'], ['/%2fsub', './sub/'],
+  ['///sub', './sub/'], ['/sub//sub', null], ['/%2f%2fsub', './sub/']]) {
+  const r = await request(server, target);
+  const where = r.headers?.location;
+  if (location === null) {
+    if (r.status === 301 && !where?.startsWith('./')) fail(`GET ${target}: 301 to ${where}, off the site`);
+    continue;
+  }
+  if (r.status !== 301 || where !== location) {
+    fail(`GET ${target}: ${r.status ?? r.error} to ${where}, not 301 to ${location}`);
+  }
+  const followed = new URL(where ?? '', `http://127.0.0.1:${server.port}${target}`);
+  if (followed.host !== `127.0.0.1:${server.port}`) fail(`GET ${target}: its redirect leaves the site for ${followed.host}`);
+}
+// Near misses of containment: a sibling folder whose name begins with the site's, a link to it,
+// and separators spelt as escapes.
+const sibling = `${site}2`;
+fs.mkdirSync(sibling);
+fs.writeFileSync(path.join(sibling, 'secret.txt'), kSecret);
+fs.symlinkSync(sibling, path.join(site, 'twin'));
+for (const target of ['/twin/secret.txt', '/twin/', '/%2e%2e%2fsite2%2fsecret.txt', '/..%2Fsite2/secret.txt',
+  '/twin%2fsecret.txt', '/sub/..%2f..%2fsite2%2fsecret.txt']) {
+  const r = await request(server, target);
+  if (r.status === 200 || (r.body ?? '').includes('SECRET')) fail(`GET ${target}: the sibling folder's file served`);
+  await alive(`GET ${target}`);
 }
 for (const [file, type] of Object.entries(kTypes)) {
   const r = await request(server, `/${file}`);
