@@ -2,8 +2,10 @@
 // the native tracer of a job against Truth called directly.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -172,6 +174,57 @@ TEST(TruthJob, TraceBytesRoundTrip) {
   TruthTrace wrong = trace;
   wrong.visibility.pop_back();
   EXPECT_THROW(serializeTruthTrace(wrong), std::invalid_argument);
+}
+
+// A trace holds what a tracer can answer: visibility in [0, 1] or -1 (not counted), air light
+// finite and >= 0; anything else is refused with the pixel it was found at (issue 53, 4). A trace
+// of 0x0 pixels is well formed (its vectors empty: nothing copied from their null data).
+TEST(TruthJob, ATraceOfImpossibleValuesIsRefused) {
+  const TruthJob job = sampleJob(true);
+  const TruthTrace trace = makeTruthTracer(job)->trace(job);
+  ASSERT_TRUE(trace.air.has_value());
+  const std::vector<float> visibility = trace.visibility, air = trace.air->light;
+  // The trace's bytes with its visibility and air light replaced.
+  const auto bytesOf = [&](const std::vector<float>& v, const std::vector<float>& a, double noise) {
+    TruthTrace t;
+    t.job_id = trace.job_id;
+    t.width = trace.width;
+    t.height = trace.height;
+    t.visibility = v;
+    t.air = Truth::AirResult{a, noise};
+    return serializeTruthTrace(t);
+  };
+  for (const float bad :
+       {1e30f, std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+        std::numeric_limits<float>::quiet_NaN(), -7.0f, -0.001f, 1.001f}) {
+    std::vector<float> v = visibility;
+    v[24 * 2 + 5] = bad;
+    try {
+      parseTruthTrace(bytesOf(v, air, trace.air->noise));
+      ADD_FAILURE() << "visibility " << bad << " accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("pixel (5, 2)"), std::string::npos) << e.what();
+    }
+    std::vector<float> a = air;
+    a[7] = bad < 0.0f || !std::isfinite(bad) ? bad : -bad;
+    EXPECT_THROW(parseTruthTrace(bytesOf(visibility, a, trace.air->noise)), std::invalid_argument)
+        << bad;
+  }
+  EXPECT_THROW(parseTruthTrace(bytesOf(visibility, air, std::numeric_limits<double>::quiet_NaN())),
+               std::invalid_argument);
+  // The edges themselves are answers: 0, 1, -1 (not counted).
+  std::vector<float> edges = visibility, dark = air;
+  edges[0] = 0.0f;
+  edges[1] = 1.0f;
+  edges[2] = kNotCounted;
+  dark[0] = 0.0f;
+  EXPECT_EQ(parseTruthTrace(bytesOf(edges, dark, trace.air->noise)).visibility, edges);
+
+  TruthTrace empty;
+  empty.job_id = 7;
+  const TruthTrace back = parseTruthTrace(serializeTruthTrace(empty));
+  EXPECT_EQ(back.width, 0);
+  EXPECT_TRUE(back.visibility.empty());
 }
 
 }  // namespace

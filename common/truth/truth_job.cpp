@@ -2,7 +2,9 @@
 // a browser's build links this file too.
 #include "truth/truth_job.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -70,6 +72,7 @@ class Reader {
       throw std::invalid_argument(std::string(what_) + " ends early (" +
                                   std::to_string(bytes_.size()) + " bytes)");
     }
+    if (size == 0) return;  // an empty vector's data() may be null: no memcpy from or to it
     std::memcpy(out, bytes_.data() + at_, size);
     at_ += size;
   }
@@ -273,21 +276,81 @@ std::vector<std::uint8_t> serializeTruthTrace(const TruthTrace& trace) {
   return std::move(w.bytes);
 }
 
-TruthTrace parseTruthTrace(const std::vector<std::uint8_t>& bytes) {
+namespace {
+
+// A trace's fixed part, before its pixels: magic, version, job id, size, air flag, padding, noise.
+constexpr std::size_t kTraceHeaderBytes = 40;
+
+struct TraceHeader {
+  std::uint64_t job_id = 0;
+  int width = 0, height = 0;
+  bool air = false;
+  double noise = 0.0;
+  std::size_t pixels = 0;
+  // The whole trace's bytes as the header describes it.
+  std::size_t bytes() const { return kTraceHeaderBytes + pixels * sizeof(float) * (air ? 2 : 1); }
+};
+
+TraceHeader readTraceHeader(Reader& r) {
   const char* what = "truth trace";
-  Reader r(bytes, what);
   checkHeader(r, kTraceMagic, what);
-  TruthTrace t;
-  t.job_id = r.get<std::uint64_t>();
-  t.width = r.get<std::int32_t>();
-  t.height = r.get<std::int32_t>();
-  const std::size_t n = pixelCount(t.width, t.height, what);
-  const bool has_air = r.get<std::uint32_t>() != 0;
+  TraceHeader h;
+  h.job_id = r.get<std::uint64_t>();
+  h.width = r.get<std::int32_t>();
+  h.height = r.get<std::int32_t>();
+  h.pixels = pixelCount(h.width, h.height, what);
+  h.air = r.get<std::uint32_t>() != 0;
   r.get<std::uint32_t>();
-  const double noise = r.get<double>();
-  t.visibility = r.array<float>(n);
-  if (has_air) t.air = Truth::AirResult{r.array<float>(n), noise};
+  h.noise = r.get<double>();
+  if (!std::isfinite(h.noise) || h.noise < 0.0) {
+    throw std::invalid_argument("truth trace: its air noise " + std::to_string(h.noise) +
+                                " is not a finite number >= 0");
+  }
+  return h;
+}
+
+// A tracer's answer is a fraction of the light (or kNotCounted) a pixel, and air light >= 0:
+// anything else is a damaged or forged file, never a figure to report.
+void checkTraceValues(const TruthTrace& t) {
+  const auto where = [&t](std::size_t i) {
+    return "pixel (" + std::to_string(i % static_cast<std::size_t>(std::max(t.width, 1))) + ", " +
+           std::to_string(i / static_cast<std::size_t>(std::max(t.width, 1))) + ")";
+  };
+  const auto shown = [](float v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", static_cast<double>(v));
+    return std::string(text);
+  };
+  for (std::size_t i = 0; i < t.visibility.size(); ++i) {
+    const float v = t.visibility[i];
+    if (!(v == kNotCounted || (v >= 0.0f && v <= 1.0f))) {  // NaN fails both
+      throw std::invalid_argument("truth trace: visibility " + shown(v) + " at " + where(i) +
+                                  " is not in [0, 1] (nor -1, not counted)");
+    }
+  }
+  if (!t.air) return;
+  for (std::size_t i = 0; i < t.air->light.size(); ++i) {
+    const float v = t.air->light[i];
+    if (!(std::isfinite(v) && v >= 0.0f)) {
+      throw std::invalid_argument("truth trace: air light " + shown(v) + " at " + where(i) +
+                                  " is not a finite number >= 0");
+    }
+  }
+}
+
+}  // namespace
+
+TruthTrace parseTruthTrace(const std::vector<std::uint8_t>& bytes) {
+  Reader r(bytes, "truth trace");
+  const TraceHeader h = readTraceHeader(r);
+  TruthTrace t;
+  t.job_id = h.job_id;
+  t.width = h.width;
+  t.height = h.height;
+  t.visibility = r.array<float>(h.pixels);
+  if (h.air) t.air = Truth::AirResult{r.array<float>(h.pixels), h.noise};
   r.end();
+  checkTraceValues(t);
   return t;
 }
 
@@ -296,11 +359,29 @@ TruthTrace readTruthTrace(const std::string& path) {
   if (!std::filesystem::is_regular_file(path, ec)) {
     throw std::invalid_argument("cannot read '" + path + "' (not a regular file)");
   }
-  std::ifstream in(path, std::ios::binary);
-  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
-                                  std::istreambuf_iterator<char>());
-  if (!in.good() && !in.eof()) throw std::invalid_argument("cannot read '" + path + "'");
   try {
+    // The header first, then the file's size against the size it declares: a large file that
+    // is no trace (or not this one) is refused before its bytes are read.
+    std::ifstream in(path, std::ios::binary);
+    std::vector<std::uint8_t> bytes(kTraceHeaderBytes);
+    in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    bytes.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+    if (!in && !in.eof()) throw std::invalid_argument("cannot be read");
+    Reader header(bytes, "truth trace");
+    const TraceHeader h = readTraceHeader(header);
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec) throw std::invalid_argument("cannot be read (" + ec.message() + ")");
+    if (size != h.bytes()) {
+      throw std::invalid_argument("truth trace of " + std::to_string(h.width) + "x" +
+                                  std::to_string(h.height) + " is " + std::to_string(h.bytes()) +
+                                  " bytes, the file " + std::to_string(size));
+    }
+    bytes.resize(h.bytes());
+    in.read(reinterpret_cast<char*>(bytes.data() + kTraceHeaderBytes),
+            static_cast<std::streamsize>(h.bytes() - kTraceHeaderBytes));
+    if (static_cast<std::size_t>(in.gcount()) != h.bytes() - kTraceHeaderBytes) {
+      throw std::invalid_argument("cannot be read to its end");
+    }
     return parseTruthTrace(bytes);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument("'" + path + "': " + e.what());
