@@ -133,6 +133,9 @@ class LightMaps final : public Lesson {
       uv_ = Texture();
       shown_id_ = 0;
       covered_ = 0;
+      from_cache_ = false;
+      bake_seconds_ = 0.0;
+      bake_rays_ = 0;
     }
     findBorders(f.scene, moving);
     showBake(f.runner.bakeState());
@@ -184,7 +187,7 @@ class LightMaps final : public Lesson {
     e.set("uShadowMap", 2);
     e.set("uUvRowsPerObject", uv_rows_);
     e.set("uMovingObject", static_cast<int>(moving));
-    e.set("uSamples", static_cast<float>(samplesPerTexel()));
+    e.set("uSamples", static_cast<float>(std::max(raysPerTexel(), 1)));
     f.setLightingUniforms(e, dimming_());
     f.drawObjects(e, Objects::All);
     if (f.mode != "visibility" && mode_() != Mode::Baked) map_.drawInset(f);
@@ -291,7 +294,7 @@ class LightMaps final : public Lesson {
     json.value("texels", atlas_.texels());
     json.value("covered_texels", covered_);
     json.value("charts", static_cast<long long>(atlas_.charts.size()));
-    json.value("samples_per_texel", samplesPerTexel());
+    json.value("samples_per_texel", raysPerTexel());
     json.value("bytes", bytes());
     json.value("baked", shown_id_ != 0);
     json.value("from_cache", from_cache_);
@@ -315,6 +318,12 @@ class LightMaps final : public Lesson {
   int samplesPerTexel() const {
     const int k = std::max(1, static_cast<int>(std::lround(std::sqrt(samples_()))));
     return k * k;
+  }
+  // The rays the bake casts from a texel: none in map mode, one to a point light (radius 0, as
+  // the truth traces it), else the samples rounded to a square.
+  int raysPerTexel() const {
+    if (mode_() == Mode::Map) return 0;
+    return radius_() > 0.0f ? samplesPerTexel() : 1;
   }
   long long bytes() const {  // the texture (2 bytes a texel) and the coordinates (8 a vertex)
     return atlas_.texels() * 2 + static_cast<long long>(uv_.width()) * uv_.height() * 8;

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <thread>
 
@@ -146,6 +147,31 @@ TEST(Lesson15, TheReportCountsTexelsRaysAndBytes) {
   EXPECT_GE(reportNumber(*runner, "/lightmap/covered_texels"), 257 * 257);
 }
 
+// Rays a texel, by their closed form: lightmap.samples rounded to a square, as the README says
+// (round(sqrt(n))^2); one to a point light (radius 0), as the truth traces it; none in map mode,
+// which bakes nothing (issue 53, 13). bake_rays is that many for each texel that faces the light.
+TEST(Lesson15, RaysATexelAreTheSamplesRoundedToASquare) {
+  const std::vector<std::string> small = {"lightmap.texels_per_unit=2"};
+  const auto report = [&](std::vector<std::string> sets) {
+    sets.insert(sets.end(), small.begin(), small.end());
+    auto runner = startLesson(kLesson, sets);
+    runner->renderFrame();
+    return std::make_pair(reportNumber(*runner, "/lightmap/samples_per_texel"),
+                          reportNumber(*runner, "/lightmap/bake_rays"));
+  };
+  const double facing = report({"lightmap.samples=1"}).second;  // one ray a facing texel
+  ASSERT_GT(facing, 0);
+  for (const int n : {2, 3, 5, 6, 7, 12, 13, 20, 21, 256}) {
+    const double k = std::round(std::sqrt(static_cast<double>(n)));
+    const auto [per_texel, rays] = report({"lightmap.samples=" + std::to_string(n)});
+    EXPECT_EQ(per_texel, k * k) << n;
+    EXPECT_EQ(rays, k * k * facing) << n;
+  }
+  EXPECT_EQ(report({"lightmap.samples=64", "lightmap.light_radius=0"}),
+            std::make_pair(1.0, facing));
+  EXPECT_EQ(report({"lightmap.samples=64", "lightmap.mode=map"}), std::make_pair(0.0, 0.0));
+}
+
 // SHADOWS_CACHE for one test, put back as ctest set it however the test ends.
 struct CacheDir {
   explicit CacheDir(const std::string& dir) {
@@ -191,7 +217,72 @@ TEST(Lesson15, ASecondRunLoadsTheBakeFromTheDiskCache) {
   damaged->renderFrame();
   EXPECT_FALSE(flag(*damaged, "/lightmap/from_cache"));
   EXPECT_EQ(testing::pixelsDiffering(first->readImage(), damaged->readImage(), 0), 0u);
+  // A file of the right job and size whose values no bake gives (NaN, 7): baked again too, and
+  // said on one line (issue 53, 5).
+  for (const float bad : {std::nanf(""), 7.0f}) {
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+      std::fstream file(entry.path(), std::ios::in | std::ios::out | std::ios::binary);
+      file.seekp(40);
+      const auto size = std::filesystem::file_size(entry.path());
+      for (std::uintmax_t at = 40; at < size; at += 4) {
+        file.write(reinterpret_cast<const char*>(&bad), 4);
+      }
+    }
+    ::testing::internal::CaptureStderr();
+    auto forged = startLesson(kLesson, {"lightmap.samples=4"});
+    forged->renderFrame();
+    const std::string said = ::testing::internal::GetCapturedStderr();
+    EXPECT_FALSE(flag(*forged, "/lightmap/from_cache")) << bad;
+    EXPECT_EQ(testing::pixelsDiffering(first->readImage(), forged->readImage(), 0), 0u) << bad;
+    EXPECT_NE(said.find("the cached bake is damaged"), std::string::npos) << said;
+    EXPECT_NE(said.find("not in [0, 1]"), std::string::npos) << said;
+  }
   std::filesystem::remove_all(dir);
+}
+
+// Without SHADOWS_CACHE, a home that is not there (or not ours to write) is never created: the
+// bake is not kept, and one line says so.
+TEST(Lesson15, AMissingHomeGetsNoCacheAndIsNotCreated) {
+  const auto tmp = std::filesystem::temp_directory_path() / "shadows_lesson15_home_test";
+  std::filesystem::remove_all(tmp);
+  const auto saved = [](const char* name) -> std::optional<std::string> {
+    const char* v = std::getenv(name);
+    return v ? std::optional<std::string>(v) : std::nullopt;
+  };
+  const std::optional<std::string> cache = saved("SHADOWS_CACHE"), xdg = saved("XDG_CACHE_HOME"),
+                                   home = saved("HOME");
+  unsetenv("SHADOWS_CACHE");
+  unsetenv("XDG_CACHE_HOME");
+  setenv("HOME", (tmp / "absent" / "home").c_str(), 1);
+  const LightMapBaker::CacheDirectory none = LightMapBaker::cacheDirectory();
+  ::testing::internal::CaptureStderr();
+  {
+    auto runner = startLesson(kLesson, {"lightmap.samples=1", "lightmap.texels_per_unit=2"});
+    runner->renderFrame();
+    EXPECT_TRUE(flag(*runner, "/lightmap/baked"));
+    EXPECT_FALSE(flag(*runner, "/lightmap/from_cache"));
+  }
+  const std::string said = ::testing::internal::GetCapturedStderr();
+  // An XDG_CACHE_HOME that is a folder is used (its shadows/ made in it).
+  std::filesystem::create_directories(tmp / "xdg");
+  setenv("XDG_CACHE_HOME", (tmp / "xdg").c_str(), 1);
+  const LightMapBaker::CacheDirectory xdg_dir = LightMapBaker::cacheDirectory();
+  const auto put = [](const char* name, const std::optional<std::string>& v) {
+    if (v) {
+      setenv(name, v->c_str(), 1);
+    } else {
+      unsetenv(name);
+    }
+  };
+  put("SHADOWS_CACHE", cache);
+  put("XDG_CACHE_HOME", xdg);
+  put("HOME", home);
+  EXPECT_EQ(none.path, "");
+  EXPECT_NE(none.why.find("absent/home"), std::string::npos) << none.why;
+  EXPECT_FALSE(std::filesystem::exists(tmp / "absent"));
+  EXPECT_NE(said.find("light map: no disk cache"), std::string::npos) << said;
+  EXPECT_EQ(xdg_dir.path, (tmp / "xdg" / "shadows").string());
+  std::filesystem::remove_all(tmp);
 }
 
 // A request big enough to watch: a 600 x 600 plane of texels under a caster.

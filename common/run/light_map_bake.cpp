@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/text.hpp"
 #include "truth/truth_job.hpp"
 
 namespace shadows {
@@ -65,20 +66,28 @@ LightMapBaker::~LightMapBaker() {
   cancel();
 }
 
-std::string LightMapBaker::cacheDirectory() {
+LightMapBaker::CacheDirectory LightMapBaker::cacheDirectory() {
 #ifdef __EMSCRIPTEN__
-  return {};
+  return {"", "a page keeps no disk cache"};
 #else
   if (const char* dir = std::getenv("SHADOWS_CACHE"); dir != nullptr && *dir != '\0') {
-    return std::string(dir) == "off" ? std::string() : std::string(dir);
+    if (std::string(dir) == "off") return {"", "SHADOWS_CACHE=off"};
+    return {dir, ""};
   }
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg == '/') {
-    return std::string(xdg) + "/shadows";
-  }
-  if (const char* home = std::getenv("HOME"); home != nullptr && *home == '/') {
-    return std::string(home) + "/.cache/shadows";
-  }
-  return {};
+  // A folder of the user's that is there and writable; never one this run would have to create.
+  const auto usable = [](const char* dir) {
+    std::error_code ec;
+    return dir != nullptr && *dir == '/' && std::filesystem::is_directory(dir, ec) &&
+           access(dir, W_OK | X_OK) == 0;
+  };
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  if (usable(xdg)) return {std::string(xdg) + "/shadows", ""};
+  const char* home = std::getenv("HOME");
+  if (usable(home)) return {std::string(home) + "/.cache/shadows", ""};
+  std::string why = "HOME (unset)";
+  if (home != nullptr) why = "HOME '" + std::string(home) + "'";
+  why += " is not a folder this user can write, nor is XDG_CACHE_HOME";
+  return {"", why};
 #endif
 }
 
@@ -110,12 +119,15 @@ void LightMapBaker::start(BakeRequest request, bool wait) {
   state_.rays = texels * (job.light.radius > 0.0f ? k * k : 1);
 
   auto running = std::make_unique<Running>();
-  const std::string dir = cacheDirectory();
-  if (!dir.empty()) {
-    running->cache_path = dir + "/lightmap-" + hex(id) + ".trace";
+  const CacheDirectory dir = cacheDirectory();
+  if (!dir.path.empty()) {
+    running->cache_path = dir.path + "/lightmap-" + hex(id) + ".trace";
     std::error_code ec;
     if (std::filesystem::is_regular_file(running->cache_path, ec)) {
+      std::string damage;
       try {
+        // readTruthTrace refuses a size its header does not give, and values no bake can have
+        // (NaN, outside [0, 1]).
         TruthTrace trace = readTruthTrace(running->cache_path);
         if (trace.job_id == id && trace.visibility.size() == job.surface.position.size()) {
           state_.stage = BakeState::Stage::kDone;
@@ -126,12 +138,22 @@ void LightMapBaker::start(BakeRequest request, bool wait) {
               std::make_shared<const std::vector<float>>(std::move(trace.visibility));
           return;
         }
-      } catch (const std::exception&) {
-        // A damaged or foreign file: bake again and write it over.
+        damage = "it answers another bake";
+      } catch (const std::exception& e) {
+        damage = e.what();
       }
+      // A damaged or foreign file is never believed: said once, baked again and written over.
+      std::fprintf(stderr, "light map: the cached bake is damaged (%s): baking it again\n",
+                   printable(damage).c_str());
     }
   } else {
-    state_.message = "no cache (SHADOWS_CACHE=off, or no home directory)";
+    state_.message = "no disk cache: " + dir.why;
+    static bool said = false;  // once a run: a window may bake many times
+    if (!said && dir.why != "SHADOWS_CACHE=off") {
+      said = true;
+      std::fprintf(stderr, "light map: no disk cache (%s); bakes are not kept\n",
+                   printable(dir.why).c_str());
+    }
   }
   running->job = std::move(job);
 #ifdef __EMSCRIPTEN__

@@ -25,9 +25,14 @@ class LightMapBaker {
   const BakeState& poll();
   const BakeState& state() const { return state_; }
   void cancel();
-  // Where bakes are kept: $SHADOWS_CACHE, else $XDG_CACHE_HOME/shadows, else
-  // ~/.cache/shadows; "" when none can be named (a page) or SHADOWS_CACHE=off.
-  static std::string cacheDirectory();
+  // Where bakes are kept: $SHADOWS_CACHE (made if missing: it was asked for), else
+  // $XDG_CACHE_HOME/shadows, else ~/.cache/shadows, where that folder (XDG_CACHE_HOME, HOME)
+  // exists and can be written: a missing or read-only home is never created or written into.
+  // `path` "" when none: `why` says why (a page, SHADOWS_CACHE=off, no usable home).
+  struct CacheDirectory {
+    std::string path, why;
+  };
+  static CacheDirectory cacheDirectory();
 
  private:
   struct Running;
