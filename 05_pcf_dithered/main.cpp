@@ -154,7 +154,11 @@ class PcfDithered final : public Lesson {
     if (f.measure.lastFrameUnavailable().count("pcf_taps") != 0) {
       ImGui::Text("cost:  taps %s, eye pass %.2f ms", caps().unavailable().c_str(), eye_ms);
     } else {
-      ImGui::Text("cost:  %5.2f taps/fragment, eye pass %.2f ms", per_fragment, eye_ms);
+      if (filtered > 0) {
+        ImGui::Text("cost:  %5.2f taps/fragment, eye pass %.2f ms", per_fragment, eye_ms);
+      } else {  // a ratio over no fragment is none, not a kernel that takes no taps
+        ImGui::Text("cost:  no fragment filtered, eye pass %.2f ms", eye_ms);
+      }
       ImGui::Text("       skipped: %lld facing away, %lld after 4 probes",
                   count("pcf_skipped_facing_away"), count("pcf_stopped_early"));
     }
@@ -209,8 +213,11 @@ class PcfDithered final : public Lesson {
     // Counted only with pcf.count on and storage buffers (GL 4.3); else null, never a number
     // left from another frame.
     if (caps().storage_buffers && count_()) {
-      json.value("taps_per_filtered_fragment",
-                 counts_[1] > 0 ? static_cast<double>(counts_[0]) / counts_[1] : 0.0);
+      json.figure("taps_per_filtered_fragment",
+                  counts_[1] > 0
+                      ? std::optional<double>(static_cast<double>(counts_[0]) / counts_[1])
+                      : std::nullopt,
+                  "no fragment was filtered: the map decided none");
     } else {
       json.value("taps_per_filtered_fragment", std::optional<long long>());  // uncounted
     }

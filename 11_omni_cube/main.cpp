@@ -124,6 +124,10 @@ class OmniCube final : public Lesson {
     light_ = f.light.position;
     near_ = f.light.near;
     far_ = f.light.far;
+    // What the cube (or the paraboloids) can hold: pixels outside it are not counted, as beyond
+    // a map's frustum in 03-08 (the lookup calls them lit, in the store's own measure of far).
+    f.light_reach = Frame::LightReach{light_, paraboloid() ? 0.0f : near_, far_,
+                                      !paraboloid() && store_() == Store::Depth};
     if (off_()) {
       f.measure.count("shadow_map_renders", 0);
       countFaces(f, 0, 0, 0);

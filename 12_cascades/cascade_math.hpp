@@ -106,4 +106,23 @@ inline Fit fitCascade(const std::array<glm::vec3, 8>& corners, const glm::mat4& 
   return fit;
 }
 
+// Texels per pixel as the shimmer pass reads them back in bytes (scene.frag, VIEW_SHIMMER):
+// log2 over [-16, 16] in 15 bits, the high 8 in blue, the low 7 in alpha beside the sunlit bit
+// (alpha >= 128). Steps of 0.001 in log2 (0.07 %), so a median is its true value to that, not
+// the ceiling 8 bits over [-4, 4] made of anything past 16 or under 1/16 texels a pixel.
+inline constexpr int kTexelLevels = 32767;
+inline constexpr double kTexelLog2Reach = 16.0;
+// What the shader writes for `texels` (its level, 0..kTexelLevels).
+inline int texelLevelOf(double texels) {
+  const double l = (std::log2(std::max(texels, 1e-6)) + kTexelLog2Reach) / (2.0 * kTexelLog2Reach);
+  return static_cast<int>(std::floor(std::clamp(l, 0.0, 1.0) * kTexelLevels + 0.5));
+}
+// The level read back from a pixel's blue and alpha bytes.
+inline int texelLevel(unsigned char blue, unsigned char alpha) {
+  return static_cast<int>(blue) * 128 + (alpha & 127);
+}
+inline double texelsFromLevel(int level) {
+  return std::exp2(2.0 * kTexelLog2Reach * level / kTexelLevels - kTexelLog2Reach);
+}
+
 }  // namespace shadows::cascade

@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "cascade_math.hpp"
@@ -166,8 +167,9 @@ class Cascades final : public Lesson {
         auto timing = f.measure.pass("shimmer");
         readStates(f, atlas_, f.view, live_after_);
         const auto [counted, flips] = countFlips(live_before_, live_after_);
-        live_shimmer_pct_ =
-            counted > 0 ? 100.0 * static_cast<double>(flips) / static_cast<double>(counted) : 0.0;
+        live_shimmer_pct_ = counted > 0 ? std::optional<double>(100.0 * static_cast<double>(flips) /
+                                                                static_cast<double>(counted))
+                                        : std::nullopt;
         live_frames_ += 1;
       }
       f.measure.count("shadow_map_renders", mask != 0 ? 1 : 0);
@@ -217,39 +219,59 @@ class Cascades final : public Lesson {
       json.value("", atlas_.fits[static_cast<size_t>(i)].texel_world);
     }
     json.endArray();
+    // Null where a cascade shades no sunlit pixel (or nothing is rendered), and why beside.
     json.beginArray("cascade_texels_per_pixel");
+    std::string none;
     for (int i = 0; i < used_count_; ++i) {
-      json.value("", off_() ? 0.0 : texels_per_pixel_[static_cast<size_t>(i)]);
+      const std::optional<double> t = texels_per_pixel_[static_cast<size_t>(i)];
+      json.value("", off_() || !t ? kNoFigure : *t);
+      if (!off_() && !t) none += (none.empty() ? "" : ", ") + std::to_string(i + 1);
     }
     json.endArray();
+    if (off_()) {
+      json.value("cascade_texels_per_pixel_not_counted", "shadow.off: no cascade is rendered");
+    } else if (!none.empty()) {
+      json.value("cascade_texels_per_pixel_not_counted",
+                 "cascade " + none + ": no sunlit pixel in the frame reads it");
+    }
     json.value("atlas_bytes",
                static_cast<long long>(atlas_.texture.width()) * atlas_.texture.height() * 4);
     json.value("shimmer_path", path_.name());
     json.value("shimmer_steps", kShimmerSteps);
-    json.value("shimmer_pct", off_() ? 0.0 : shimmer_pct_);
+    // A share of no pixel, or of no frame, is no figure: null, and why (a 0 reads "steady").
+    json.figure("shimmer_pct", off_() ? std::nullopt : shimmer_pct_,
+                off_() ? "shadow.off: no cascade is rendered"
+                       : "no sunlit pixel inside the cascades along the path");
     json.value("shimmer_pixels", off_() ? 0LL : shimmer_counted_);
     // The same, frame to frame, while input moved the eye (a window's drag; 0 frames headless).
     json.value("shimmer_live_frames", live_frames_);
-    json.value("shimmer_live_pct", live_shimmer_pct_);
+    json.figure("shimmer_live_pct", live_frames_ > 0 ? live_shimmer_pct_ : std::nullopt,
+                live_frames_ > 0 ? "no sunlit pixel inside the cascades in the last moving frame"
+                                 : "no frame moved the eye (a window's drag measures it)");
   }
 
   void panel(Frame&) override {
-    ImGui::TextWrapped(
-        "shimmer: %.4f %% of the sunlit pixels flip between two steps of the "
-        "eye (the truth: none)",
-        shimmer_pct_);
-    if (live_frames_ > 0) {
+    if (shimmer_pct_) {
+      ImGui::TextWrapped(
+          "shimmer: %.4f %% of the sunlit pixels flip between two steps of the "
+          "eye (the truth: none)",
+          *shimmer_pct_);
+    } else {
+      ImGui::TextWrapped("shimmer: none counted (no sunlit pixel inside the cascades)");
+    }
+    if (live_frames_ > 0 && live_shimmer_pct_) {
       ImGui::TextWrapped("while you drag: %.4f %% flipped in the last frame the eye moved",
-                         live_shimmer_pct_);
+                         *live_shimmer_pct_);
     }
     std::string slices;
     for (int i = 0; i < used_count_; ++i) {
       char line[128];
-      std::snprintf(line, sizeof line, "%s%.1f-%.1f m: %.1f cm a texel, %.2f texels a pixel",
-                    i ? "; " : "", splits_[static_cast<size_t>(i)],
-                    splits_[static_cast<size_t>(i) + 1],
-                    100.0f * atlas_.fits[static_cast<size_t>(i)].texel_world,
-                    texels_per_pixel_[static_cast<size_t>(i)]);
+      const std::optional<double> t = texels_per_pixel_[static_cast<size_t>(i)];
+      char texels[48] = "no pixel reads it";
+      if (t) std::snprintf(texels, sizeof texels, "%.2f texels a pixel", *t);
+      std::snprintf(line, sizeof line, "%s%.1f-%.1f m: %.1f cm a texel, %s", i ? "; " : "",
+                    splits_[static_cast<size_t>(i)], splits_[static_cast<size_t>(i) + 1],
+                    100.0f * atlas_.fits[static_cast<size_t>(i)].texel_world, texels);
       slices += line;
     }
     ImGui::TextWrapped("cascades: %s", slices.c_str());
@@ -472,24 +494,26 @@ class Cascades final : public Lesson {
       std::swap(last, now);
     }
     shimmer_counted_ = counted / kShimmerSteps;
-    shimmer_pct_ =
-        counted > 0 ? 100.0 * static_cast<double>(flips) / static_cast<double>(counted) : 0.0;
+    shimmer_pct_ = counted > 0 ? std::optional<double>(100.0 * static_cast<double>(flips) /
+                                                       static_cast<double>(counted))
+                               : std::nullopt;
   }
 
   // The median texels per pixel of each cascade over the sunlit pixels it shades (the eye's
-  // own step of the path): what its slice of the frame gets. 0 where it shades none.
+  // own step of the path): what its slice of the frame gets; none where it shades none.
   void texelsPerPixel(const std::vector<unsigned char>& rgba) {
-    std::array<std::vector<unsigned char>, kMaxCascades> levels;
+    std::array<std::vector<int>, kMaxCascades> levels;
     for (size_t p = 0; p + 3 < rgba.size(); p += 4) {
       if (rgba[p + 3] < 128 || rgba[p + 1] == 0 || rgba[p + 1] > kMaxCascades) continue;
-      levels[static_cast<size_t>(rgba[p + 1] - 1)].push_back(rgba[p + 2]);
+      levels[static_cast<size_t>(rgba[p + 1] - 1)].push_back(
+          cascade::texelLevel(rgba[p + 2], rgba[p + 3]));
     }
     for (size_t i = 0; i < levels.size(); ++i) {
-      std::vector<unsigned char>& l = levels[i];
-      texels_per_pixel_[i] = 0.0;
+      std::vector<int>& l = levels[i];
+      texels_per_pixel_[i].reset();
       if (l.empty()) continue;
       std::nth_element(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(l.size() / 2), l.end());
-      texels_per_pixel_[i] = std::exp2(8.0 * l[l.size() / 2] / 255.0 - 4.0);
+      texels_per_pixel_[i] = cascade::texelsFromLevel(l[l.size() / 2]);
     }
   }
 
@@ -509,12 +533,12 @@ class Cascades final : public Lesson {
   std::array<float, kMaxCascades + 1> splits_{};
   glm::mat4 atlas_projection_{0.0f};
   std::string shimmer_key_;
-  double shimmer_pct_ = 0.0;
+  std::optional<double> shimmer_pct_;
   long long shimmer_counted_ = 0;
-  std::array<double, kMaxCascades> texels_per_pixel_{};
+  std::array<std::optional<double>, kMaxCascades> texels_per_pixel_{};
   // While the eye is dragged: the share of sunlit points the last moving frame flipped.
   std::vector<unsigned char> live_before_, live_after_;
-  double live_shimmer_pct_ = 0.0;
+  std::optional<double> live_shimmer_pct_;
   long long live_frames_ = 0;
   Texture shimmer_color_, shimmer_depth_;
   std::unique_ptr<Framebuffer> shimmer_target_;

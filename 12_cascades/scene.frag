@@ -116,15 +116,18 @@ void main() {
   }
   outColor = vec4(c * (0.4 + 0.6 * shade), 1.0);
 #else  // VIEW_SHIMMER (never offered), read back as bytes: the state, inside the cascades,
-       // the cascade's texels per pixel (log2 from -4 to 4), facing the sun
+       // the cascade's texels per pixel, facing the sun. Texels per pixel as log2 over
+       // [-16, 16] in 15 bits: the high 8 in blue, the low 7 in alpha beside the sunlit bit
+       // (cascade_math.hpp, texelLevelOf, mirrors it).
   float sunlit = dot(n, -uLightDir) > 0.0 ? 1.0 : 0.0;
   float texels = 1.0;
   if (cascade < uCount) {
     vec2 t = cascadeCoord(cascade, vWorld).xy * uSize;
     texels = max(length(dFdx(t)), length(dFdy(t)));
   }
-  float level = clamp((log2(max(texels, 1e-6)) + 4.0) / 8.0, 0.0, 1.0);
+  float level = floor(clamp((log2(max(texels, 1e-6)) + 16.0) / 32.0, 0.0, 1.0) * 32767.0 + 0.5);
+  float high = floor(level / 128.0);
   outColor = vec4(shade >= 0.5 ? 1.0 : 0.0, cascade < uCount ? float(cascade + 1) / 255.0 : 0.0,
-                  level, sunlit);
+                  high / 255.0, (128.0 * sunlit + level - 128.0 * high) / 255.0);
 #endif
 }

@@ -14,7 +14,9 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <glm/gtc/type_ptr.hpp>
+#include <string>
 
 #include "core/json.hpp"
 #include "lesson/lesson.hpp"
@@ -169,12 +171,16 @@ class SoftShadows final : public Lesson {
     } else {
       const long long filtered = count("pcf_filtered_fragments");
       const long long searched = filtered + count("pcss_no_blocker") + count("pcss_all_blockers");
+      // A ratio over no fragment is none, never a 0 that reads as a free filter.
       const auto per = [](long long a, long long b) {
-        return b > 0 ? static_cast<double>(a) / static_cast<double>(b) : 0.0;
+        if (b <= 0) return std::string("none");
+        char text[32];
+        std::snprintf(text, sizeof text, "%.1f", static_cast<double>(a) / static_cast<double>(b));
+        return std::string(text);
       };
-      ImGui::TextWrapped("cost: %.1f search + %.1f filter taps a fragment",
-                         per(count("pcss_search_taps"), searched),
-                         per(count("pcf_taps"), filtered));
+      ImGui::TextWrapped("cost: %s search + %s filter taps a fragment",
+                         per(count("pcss_search_taps"), searched).c_str(),
+                         per(count("pcf_taps"), filtered).c_str());
       ImGui::TextWrapped("filtered %lld; no filter: %lld lit, %lld umbra", filtered,
                          count("pcss_no_blocker"), count("pcss_all_blockers"));
     }
@@ -224,19 +230,20 @@ class SoftShadows final : public Lesson {
   void report(JsonWriter& json) const override {
     json.value("truth_area_radius", light_radius_());
     json.value("search_from_distance", search_from_);
-    const bool counted = caps().storage_buffers && count_();
-    const auto ratio = [&](size_t a, size_t b) {
-      return counted ? std::optional<double>(
-                           counts_[b] > 0 ? static_cast<double>(counts_[a]) / counts_[b] : 0.0)
-                     : std::optional<double>();
+    // Counted only with pcss.count on and storage buffers (GL 4.3); else null. Over no
+    // fragment, null with the reason (a 0 would read as a filter that takes no taps).
+    if (!caps().storage_buffers || !count_()) {
+      json.value("taps_per_filtered_fragment", std::optional<long long>());
+      json.value("search_taps_per_fragment", std::optional<long long>());
+      return;
+    }
+    const auto ratio = [](GLuint a, GLuint b) {
+      return b > 0 ? std::optional<double>(static_cast<double>(a) / b) : std::nullopt;
     };
-    // Counted only with pcss.count on and storage buffers (GL 4.3); else null.
-    json.value("taps_per_filtered_fragment", ratio(1, 2));
+    json.figure("taps_per_filtered_fragment", ratio(counts_[1], counts_[2]),
+                "no fragment was filtered: every one was lit or in umbra by its search");
     const GLuint shaded = counts_[2] + counts_[3] + counts_[4];  // fragments the map decided
-    json.value(
-        "search_taps_per_fragment",
-        counted ? std::optional<double>(shaded > 0 ? static_cast<double>(counts_[0]) / shaded : 0.0)
-                : std::optional<double>());
+    json.figure("search_taps_per_fragment", ratio(counts_[0], shaded), "no fragment read the map");
   }
 
  private:

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -234,6 +235,19 @@ TEST_P(Cli, BadInputExitsTwoWithOneLineAndWritesNothing) {
   EXPECT_EQ(r.output.rfind(kLesson + ": ", 0), 0u) << r.output;
 }
 
+// A flag whose value was left out, followed by another option: the message names the missing
+// value and the option it took for one, not the next word as unknown (issue 53, 13).
+TEST_F(Cli, AMissingValueIsNamedNotTheWordAfterIt) {
+  for (const std::string flag : {"--set", "--out", "--settings", "--truth-from", "--report"}) {
+    const Result r = run(kLesson, "--headless " + flag + " --size 160x120");
+    EXPECT_EQ(r.exit_code, 2) << flag << "\n" << r.output;
+    EXPECT_NE(r.output.find(flag + ": expected"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("got the option '--size'"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("160x120"), std::string::npos) << r.output;
+    EXPECT_TRUE(dirIsEmpty()) << flag;
+  }
+}
+
 // A name longer than the file system takes (255 bytes): refused before rendering.
 const std::string kLongName = "--out /tmp/" + std::string(300, 'a') + ".png";
 
@@ -376,6 +390,66 @@ TEST_F(Cli, TheTruthJobAndItsTraceGoOutAndComeBack) {
   // A job is not a trace.
   r = run(kLesson, base + " --truth-from " + trace.string() + "x");
   EXPECT_EQ(r.exit_code, 2) << r.output;
+}
+
+// A trace no tracer could have answered is bad input (exit 2, one line), never a figure:
+// visibility outside [0, 1] (other than -1, not counted) or not finite, a file whose size is
+// not what its header says (refused before its bytes are read: a 64 GiB sparse file would take
+// minutes and all memory), and a header of 0x0 pixels (issue 53: 3, 4, 10).
+TEST_F(Cli, TruthFromRefusesWhatNoTracerAnswers) {
+  const std::string base = "--headless --size 96x72 --frames 1 --out " + (dir / "x.png").string();
+  const fs::path trace = dir / "embree.trace";
+  Result r = run(kLesson, base + " --truth-result " + trace.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::vector<std::uint8_t> good = readBytes(trace);
+  ASSERT_EQ(good.size(), 40u + 4u * 96 * 72);
+  size_t counted_at = 0;  // a counted pixel's float
+  for (size_t at = 40; at < good.size() && counted_at == 0; at += 4) {
+    float v;
+    std::memcpy(&v, &good[at], 4);
+    if (v >= 0.0f) counted_at = at;
+  }
+  ASSERT_NE(counted_at, 0u);
+  const auto write = [](const fs::path& path, const std::vector<std::uint8_t>& bytes) {
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), static_cast<long>(bytes.size()));
+  };
+  const auto refused = [&](const fs::path& path, const std::string& says, const std::string& what) {
+    const fs::path report = dir / "r.json";
+    const Result got =
+        run(kLesson, base + " --truth-from " + path.string() + " --report " + report.string());
+    EXPECT_EQ(got.exit_code, 2) << what << "\n" << got.output;
+    EXPECT_NE(got.output.find(says), std::string::npos) << what << "\n" << got.output;
+    EXPECT_EQ(std::count(got.output.begin(), got.output.end(), '\n'), 1) << what << got.output;
+    EXPECT_FALSE(fs::exists(report)) << what;
+  };
+  for (const float bad : {1e30f, std::numeric_limits<float>::infinity(),
+                          std::numeric_limits<float>::quiet_NaN(), -7.0f, 1.0001f, -0.5f}) {
+    std::vector<std::uint8_t> bytes = good;
+    std::memcpy(&bytes[counted_at], &bad, 4);
+    const fs::path path = dir / "bad.trace";
+    write(path, bytes);
+    refused(path, "not in [0, 1]", "visibility " + std::to_string(bad));
+  }
+  // The header's size against the file's: one byte more, and a sparse 64 GiB file.
+  std::vector<std::uint8_t> longer = good;
+  longer.push_back(0);
+  write(dir / "longer.trace", longer);
+  refused(dir / "longer.trace", "the file " + std::to_string(longer.size()), "a byte too many");
+  write(dir / "huge.trace", good);
+  ASSERT_EQ(::truncate((dir / "huge.trace").c_str(), 64LL << 30), 0);
+  refused(dir / "huge.trace", "the file " + std::to_string(64LL << 30), "64 GiB");
+  std::vector<std::uint8_t> no_trace(64, 'x');
+  write(dir / "huge_junk.trace", no_trace);
+  ASSERT_EQ(::truncate((dir / "huge_junk.trace").c_str(), 64LL << 30), 0);
+  refused(dir / "huge_junk.trace", "not a truth trace", "64 GiB of no trace");
+  fs::remove(dir / "huge.trace");
+  fs::remove(dir / "huge_junk.trace");
+  // A header of 0x0 pixels and nothing after it: a trace of no job this run has.
+  std::vector<std::uint8_t> empty(good.begin(), good.begin() + 40);
+  std::memset(&empty[16], 0, 8);
+  write(dir / "empty.trace", empty);
+  refused(dir / "empty.trace", "does not fit its job", "a 0x0 trace");
 }
 
 TEST_F(Cli, TwoOutputsIntoOneFileAreRefused) {

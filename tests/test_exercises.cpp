@@ -61,7 +61,7 @@ std::vector<Solution> solutions() {
 // How many exercises a lesson has, as its own message says ("has exercises 1..K", "has no
 // exercises").
 int exerciseCount(const std::string& lesson) {
-  const Result r = run(lesson, "--grade 99 --no-truth");
+  const Result r = run(lesson, "--grade 99");  // refused before anything is rendered
   EXPECT_EQ(r.exit_code, 2) << lesson << ": " << r.output;
   std::smatch m;
   if (std::regex_search(r.output, m, std::regex("has exercises 1\\.\\.([0-9]+)")))
@@ -137,6 +137,80 @@ INSTANTIATE_TEST_SUITE_P(Lessons, ExerciseSolutions, ::testing::ValuesIn(lessons
                            return param.param;
                          });
 
+// Every refusal the grader makes, an exercise run (a window's, --exercise) makes too on the
+// same settings, in the same words, and the reverse: what one takes, the other takes (issue 53).
+// Per exercise: a slider it locks and one it allows, each at its default. The allowed ones are
+// read from the grader's own refusal ("the exercise lets you set A, B and view (...); not X").
+class ExerciseLocks : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ExerciseLocks, TheGraderAndTheExerciseRunRefuseAndTakeTheSameSettings) {
+  const std::string& lesson = GetParam();
+  std::vector<std::pair<std::string, std::string>> params;  // name, default
+  {
+    const Result list = run(lesson, "--list-params");
+    ASSERT_EQ(list.exit_code, 0) << list.output;
+    std::istringstream lines(list.output);
+    for (std::string line; std::getline(lines, line);) {
+      std::smatch m;
+      if (std::regex_search(line, m, std::regex("^(\\S+)\\s+\\S+\\s+default (\\S+)"))) {
+        params.emplace_back(m[1], m[2]);
+      }
+    }
+  }
+  ASSERT_GT(params.size(), 5u) << lesson;
+  const std::string small = " --size 16x16 --frames 1 --out /dev/null";
+  const auto refusal = [](const std::string& output) {  // the message after "--grade N: "
+    const size_t at = output.find(": the exercise lets you set");
+    return at == std::string::npos ? output : output.substr(at);
+  };
+  const int count = exerciseCount(lesson);
+  for (int n = 1; n <= count; ++n) {
+    const std::string ex = std::to_string(n);
+    std::string allowed_text;
+    for (const auto& [name, value] : params) {
+      const Result r = run(lesson, "--grade " + ex + " --set " + name + "=" + value + small);
+      if (r.exit_code != 2) continue;
+      std::smatch m;
+      if (std::regex_search(r.output, m, std::regex("lets you set (.*); not "))) {
+        allowed_text = m[1];
+        break;
+      }
+    }
+    ASSERT_FALSE(allowed_text.empty()) << lesson << " exercise " << n << " refuses nothing";
+    std::vector<std::pair<std::string, std::string>> locked, allowed;
+    for (const auto& p : params) {
+      const std::string name = std::regex_replace(p.first, std::regex("\\."), "\\.");
+      const bool in = std::regex_search(allowed_text, std::regex("(^|[ ,])" + name + "([ ,]|$)"));
+      (in ? allowed : locked).push_back(p);
+    }
+    ASSERT_FALSE(locked.empty());
+    ASSERT_FALSE(allowed.empty());
+    // A locked slider: both refuse (exit 2), in the same words.
+    const auto& [lname, lvalue] = locked.back();
+    const Result graded = run(lesson, "--grade " + ex + " --set " + lname + "=" + lvalue + small);
+    const Result live =
+        run(lesson, "--exercise " + ex + " --headless --set " + lname + "=" + lvalue + small);
+    EXPECT_EQ(graded.exit_code, 2) << lesson << " " << n << " " << lname << graded.output;
+    EXPECT_EQ(live.exit_code, 2) << lesson << " " << n << " " << lname << live.output;
+    EXPECT_EQ(refusal(graded.output), refusal(live.output)) << lesson << " " << n;
+    // An allowed one (not the view, which always may): both take it.
+    for (const auto& [aname, avalue] : allowed) {
+      if (aname == "view") continue;
+      const Result g = run(lesson, "--grade " + ex + " --set " + aname + "=" + avalue + small);
+      const Result e =
+          run(lesson, "--exercise " + ex + " --headless --set " + aname + "=" + avalue + small);
+      EXPECT_NE(g.exit_code, 2) << lesson << " " << n << " " << aname << g.output;
+      EXPECT_EQ(e.exit_code, 0) << lesson << " " << n << " " << aname << e.output;
+      break;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Lessons, ExerciseLocks, ::testing::ValuesIn(lessonsWithSolutions()),
+                         [](const ::testing::TestParamInfo<std::string>& param) {
+                           return param.param;
+                         });
+
 TEST(Exercises, WhatIsNotTheStudentsToSetIsRefusedInOneLine) {
   // A setting outside the exercise's sliders, the camera where it stays, an exercise the
   // lesson does not have: exit 2, one line naming it, nothing rendered.
@@ -148,12 +222,41 @@ TEST(Exercises, WhatIsNotTheStudentsToSetIsRefusedInOneLine) {
            {"04_bias_offset", "--grade 7", "has exercises 1..2"},
            {"03_shadow_map_basic", "--exercise 3", "has exercises 1..2"},
            {"04_bias_offset", "--exercise 1 --grade 2", "--grade: a second, different exercise"},
-           {"04_bias_offset", "--exercise 1 --no-truth", "cannot run with --no-truth"}}) {
+           {"04_bias_offset", "--exercise 1 --no-truth", "--exercise judges by the truth"},
+           {"04_bias_offset", "--grade 1 --no-truth", "--grade judges by the truth"},
+           {"04_bias_offset", "--no-truth --grade 1", "--grade judges by the truth"}}) {
     const Result r = run(lesson, args + " --out /dev/null");
     EXPECT_EQ(r.exit_code, 2) << lesson << " " << args << "\n" << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
     EXPECT_NE(r.output.find(says), std::string::npos) << r.output;
   }
+}
+
+// A goal over a figure of nothing is not met, and says why: with one search tap 14's search
+// finds all or none, so no fragment is filtered and there are no "filter taps" to be within 16
+// (it printed "filter taps 0 <= 16: met"; issue 53, 6).
+TEST(Exercises, AGoalOverAFigureOfNothingIsNotMet) {
+  const Result r =
+      run("14_soft_shadows", "--grade 1 --set pcss.mode=pcss --set pcss.search_taps=1 --frames 1");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  const std::string last = lastLine(r.output);
+  EXPECT_NE(last.find(": NOT MET: "), std::string::npos) << r.output;
+  EXPECT_NE(last.find("filter taps none (no fragment was filtered"), std::string::npos) << last;
+  EXPECT_NE(last.find("<= 16: not met"), std::string::npos) << last;
+}
+
+// A grade writes only what it is asked for: without --out, no out/<lesson>.png in the working
+// folder (where an older report beside it would no longer match it), and nothing else there.
+TEST(Exercises, AGradeWritesNothingUnasked) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("shadows_grade_writes_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const Result r = run("04_bias_offset", "--grade 1 --frames 1", "cd " + dir.string() + " && ");
+  EXPECT_EQ(r.exit_code, 1) << r.output;  // the starting point: not met
+  EXPECT_NE(lastLine(r.output).find(": NOT MET: "), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::is_empty(dir)) << "a grade wrote into the working folder";
+  fs::remove_all(dir);
 }
 
 TEST(Exercises, TheExerciseRunsInTheLessonFromItsOwnStartingPoint) {

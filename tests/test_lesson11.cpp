@@ -160,6 +160,28 @@ TEST(Lesson11, BeyondFarEveryFormatReadsLit) {
   EXPECT_NEAR(floats.false_shadow_pct, fixed.false_shadow_pct, 0.02);
 }
 
+// What the cube cannot hold is not counted, as beyond a map's frustum in 03-08 (issue 53, 11):
+// with far at 0.01 every pixel is beyond it (11 calls them lit; it counted them, 9 % false lit
+// as with shadow.off). With far between the nearest and farthest surfaces, only those within it
+// count, in each store's own measure of far, and what is counted is shaded right.
+TEST(Lesson11, PixelsTheCubeCannotHoldAreNotCounted) {
+  const ErrorMetrics none =
+      testing::measureOnce(kLesson, {"light.near=0.001", "light.far=0.01"}, 160, 120);
+  EXPECT_EQ(none.counted_pixels, 0);
+  EXPECT_GT(none.covered_pixels, 0);
+  const ErrorMetrics all = testing::measureOnce(kLesson, {}, 160, 120);
+  for (const std::string store : {"distance", "depth"}) {
+    for (const std::string method : {"cube", "paraboloid"}) {
+      if (store == "depth" && method == "paraboloid") continue;
+      const ErrorMetrics part = testing::measureOnce(
+          kLesson, {"light.far=4", "cube.store=" + store, "omni.method=" + method}, 160, 120);
+      EXPECT_GT(part.counted_pixels, 0) << store << " " << method;
+      EXPECT_LT(part.counted_pixels, all.counted_pixels) << store << " " << method;
+      EXPECT_LT(part.false_lit_pct, 1.0) << store << " " << method;  // what it holds, it shades
+    }
+  }
+}
+
 TEST(Lesson11, FacesWithoutCastersAreSkippedAndTheCubeIsKeptWhileNothingMoves) {
   auto runner = startLesson(kLesson, {}, 160, 120);
   runner->renderFrame();

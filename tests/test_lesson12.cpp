@@ -74,6 +74,25 @@ TEST(CascadeMath, ASnappedSphereBoxKeepsItsSizeAndMovesByWholeTexelsWhateverTheE
   EXPECT_LT((c.max - c.min).x * (c.max - c.min).y, (a.max - a.min).x * (a.max - a.min).y);
 }
 
+// The shimmer pass's texels per pixel in bytes (scene.frag's VIEW_SHIMMER, mirrored): any value
+// from 2^-16 to 2^16 comes back within a step (0.07 %), its bytes keep the sunlit bit, and
+// nothing clamps at the 16 (or 1/16) an 8-bit level over [-4, 4] did (issue 53, 7).
+TEST(CascadeMath, TexelsPerPixelGoThroughTheirBytesWithinAStep) {
+  for (const double texels :
+       {1.0 / 60000, 0.01, 1.0 / 16, 0.3, 1.0, 1.704, 13.7, 16.0, 40.0, 900.0, 60000.0}) {
+    const int level = cascade::texelLevelOf(texels);
+    const auto blue = static_cast<unsigned char>(level / 128);
+    for (const int sunlit : {0, 1}) {
+      const auto alpha = static_cast<unsigned char>(128 * sunlit + level % 128);
+      EXPECT_EQ(alpha >= 128, sunlit == 1);
+      EXPECT_EQ(cascade::texelLevel(blue, alpha), level);
+    }
+    EXPECT_NEAR(cascade::texelsFromLevel(level) / texels, 1.0, 0.0004) << texels;
+  }
+  EXPECT_EQ(cascade::texelLevelOf(1e9), cascade::kTexelLevels);  // the reach's ends
+  EXPECT_EQ(cascade::texelLevelOf(0.0), 0);
+}
+
 TEST(Lesson12, SnapshotsMatchTheirGoldens) {
   auto runner = startLesson(kLesson, {});
   runner->renderFrame();
@@ -270,6 +289,48 @@ TEST(Lesson12, ThePracticalSplitGivesEverySliceATexelAPixelAndOneMapDoesNot) {
   ASSERT_EQ(uniform.size(), 4u);
   EXPECT_LT(uniform[0], 1.0);
   EXPECT_GT(uniform[1], 10.0 * uniform[0]);
+}
+
+// A 2048 map on a 320x240 frame gives the far slices more than 16 texels a pixel (about 29
+// and 28): their true figures, not the ceiling of 16 an 8-bit level stored (issue 53, 7).
+TEST(Lesson12, TexelsPerPixelAreNotClampedAtSixteen) {
+  auto runner = startLesson(kLesson, {"cascades.size=2048"}, 320, 240);
+  runner->renderFrame();
+  const auto t = reportValue(*runner, "cascade_texels_per_pixel").get<std::vector<double>>();
+  ASSERT_EQ(t.size(), 4u);
+  EXPECT_GT(t[2], 20.0);
+  EXPECT_GT(t[3], 20.0);
+  EXPECT_NE(t[2], t[3]);
+  // 2048 against the default 1024: twice the texels a pixel, slice by slice.
+  auto base = startLesson(kLesson, {}, 320, 240);
+  base->renderFrame();
+  const auto b = reportValue(*base, "cascade_texels_per_pixel").get<std::vector<double>>();
+  ASSERT_EQ(b.size(), 4u);
+  for (size_t i = 0; i < 4; ++i) EXPECT_NEAR(t[i] / b[i], 2.0, 0.05) << i;
+}
+
+// Figures over nothing are null with a reason, never a zero that reads "steady" (issue 53, 6):
+// the shimmer with the camera at the sky, with shadow.off, and the live shimmer before any frame
+// moved the eye.
+TEST(Lesson12, AShimmerOverNothingIsNullWithAReason) {
+  for (const std::vector<std::string>& sets :
+       {std::vector<std::string>{"camera.target=0,60,-5"}, {"shadow.off=true"}}) {
+    auto runner = startLesson(kLesson, sets, 160, 120);
+    runner->renderFrame();
+    const nlohmann::ordered_json r = testing::report(*runner);
+    EXPECT_TRUE(r["shimmer_pct"].is_null()) << sets[0] << ": " << r["shimmer_pct"];
+    EXPECT_TRUE(r["shimmer_pct_not_counted"].is_string()) << sets[0];
+    EXPECT_TRUE(r["shimmer_live_pct"].is_null()) << sets[0];
+    EXPECT_TRUE(r["shimmer_live_pct_not_counted"].is_string()) << sets[0];
+    for (const auto& t : r["cascade_texels_per_pixel"]) EXPECT_TRUE(t.is_null()) << sets[0];
+    EXPECT_TRUE(r["cascade_texels_per_pixel_not_counted"].is_string()) << sets[0];
+  }
+  auto seen = startLesson(kLesson, {}, 160, 120);
+  seen->renderFrame();
+  const nlohmann::ordered_json r = testing::report(*seen);
+  EXPECT_TRUE(r["shimmer_pct"].is_number());
+  EXPECT_FALSE(r.contains("shimmer_pct_not_counted"));
+  EXPECT_TRUE(r["shimmer_live_pct"].is_null());  // headless: no frame moved the eye
 }
 
 TEST(Lesson12, EveryMapInputRendersTheMapsAgain) {

@@ -1,7 +1,12 @@
 // Report fields against an independent computation on cases where the answer is known:
 // medians of the very frames timed, the overhead's direction, counters of one frame (never
 // accumulated), the size a run was given, and pixel counts that nest.
+#include <unistd.h>
+
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "gl/measure.hpp"
 #include "harness.hpp"
@@ -20,7 +25,9 @@ double sortedMedian(std::vector<double> v) {
 }
 
 TEST(ReportFields, TimesAreMediansOfTheFramesTimedAndTheOverheadIsFrameOverBaseline) {
-  for (const int frames : {3, 4}) {  // an odd and an even count
+  // An odd and an even count of baseline frames (the first is not timed), each at least the
+  // three a ratio needs.
+  for (const int frames : {4, 5}) {
     auto runner = startLesson("03_shadow_map_basic", {"shadow.cache=false"}, 96, 72);
     std::vector<double> frame_ms, baseline_ms;
     for (int i = 0; i < frames; ++i) {
@@ -42,6 +49,28 @@ TEST(ReportFields, TimesAreMediansOfTheFramesTimedAndTheOverheadIsFrameOverBasel
     // Above 1 means the shadow costs: frame over baseline, not the other way round.
     EXPECT_NEAR(json["shadow_overhead"].get<double>(), frame / baseline, 1e-5 * frame / baseline);
   }
+}
+
+// One frame at load is no cost (0.002 was reported): below three timed frames of each, the
+// ratio is null and says why (issue 53, 14).
+TEST(ReportFields, AnOverheadOnOneFrameIsNullWithAReason) {
+  auto runner = startLesson("03_shadow_map_basic", {"shadow.cache=false"}, 96, 72);
+  for (int i = 0; i < 3; ++i) {
+    runner->baseline().render();
+    runner->renderFrame();
+  }
+  // Two timed baseline frames: the first compiled its variants, untimed.
+  ASSERT_EQ(runner->baseline().measure().timedFrames(), 2u);
+  auto json = report(*runner);
+  EXPECT_TRUE(json["baseline_frame_ms"].is_number());
+  EXPECT_TRUE(json["shadow_overhead"].is_null()) << json["shadow_overhead"];
+  EXPECT_NE(json["shadow_overhead_not_counted"].get<std::string>().find("--frames 3"),
+            std::string::npos);
+  runner->baseline().render();
+  runner->renderFrame();
+  json = report(*runner);
+  EXPECT_TRUE(json["shadow_overhead"].is_number());
+  EXPECT_FALSE(json.contains("shadow_overhead_not_counted"));
 }
 
 TEST(Median, OddEvenOneAndNone) {
@@ -134,6 +163,37 @@ TEST(ReportFields, NothingCountedIsNullWithAReasonNeverAZero) {
   EXPECT_TRUE(seen["error"]["false_shadow_pct"].is_number());
   EXPECT_FALSE(seen["error"].contains("not_counted"));
   EXPECT_TRUE(seen["undersampled_pct"].is_number());
+}
+
+// F12's screenshot (Runner::screenshot, what the key and the panel's button do) goes to
+// out/screenshots/ of the working folder (ignored by git), never over an earlier one, and says
+// where (issue 53, 12): not <lesson>_screenshot_1.png in the repository's root.
+TEST(Outputs, AScreenshotGoesToOutScreenshotsAndSaysWhere) {
+  const std::filesystem::path was = std::filesystem::current_path();
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("shadows_screenshot_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "out" / "screenshots");
+  std::ofstream(dir / "out" / "screenshots" / "03_shadow_map_basic_1.png") << "an earlier one";
+  std::filesystem::current_path(dir);
+  auto runner = startLesson("03_shadow_map_basic", {}, 96, 72);
+  runner->renderFrame();
+  ::testing::internal::CaptureStderr();
+  const std::string said = runner->screenshot();
+  const std::string printed = ::testing::internal::GetCapturedStderr();
+  const std::string again = runner->screenshot();
+  std::filesystem::current_path(was);
+  EXPECT_EQ(said, "screenshot: out/screenshots/03_shadow_map_basic_2.png");
+  EXPECT_EQ(printed.rfind(said, 0), 0u) << printed;
+  EXPECT_EQ(again, "screenshot: out/screenshots/03_shadow_map_basic_3.png");
+  std::ifstream earlier(dir / "out" / "screenshots" / "03_shadow_map_basic_1.png");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(earlier), {}), "an earlier one");
+  EXPECT_GT(std::filesystem::file_size(dir / "out" / "screenshots" / "03_shadow_map_basic_2.png"),
+            100u);
+  size_t in_dir = 0;  // nothing else, nothing beside out/
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++in_dir;
+  EXPECT_EQ(in_dir, 1u);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(ReportFields, TheEyesFarPlaneReachesTheSceneFromAnywhereTheSlidersAllow) {

@@ -65,8 +65,14 @@ std::string readSize(Arguments& args, int& width, int& height, int minSide) {
 std::string readSet(Arguments& args, std::vector<std::string>& sets) {
   std::string value;
   if (!args.value(value)) return args.flag() + ": expected name=value";
+  // `--set --size 160x120`: the value is missing, not `160x120` unknown.
+  if (isOption(value)) return args.flag() + ": expected name=value, got the option '" + value + "'";
   sets.push_back(value);
   return {};
+}
+
+bool isOption(const std::string& value) {
+  return value.size() > 2 && value.rfind("--", 0) == 0;
 }
 
 std::string readSettingsFile(const std::string& path, std::vector<std::string>& sets) {

@@ -44,6 +44,9 @@ std::string readSize(Arguments& args, int& width, int& height, int minSide = 1);
 
 // --set name=value, appended to `sets` (checked later by Params::assign, which knows the names).
 std::string readSet(Arguments& args, std::vector<std::string>& sets);
+// A flag's value that is itself an option (`--size`): the value was left out. A file of such a
+// name is given as `./--name`.
+bool isOption(const std::string& value);
 // --settings FILE: one name=value a line (what the panel's "Save settings" writes; blank lines
 // and lines starting with # are skipped), appended to `sets` in order. "" or one line naming
 // the file (and line) and what is wrong.

@@ -16,6 +16,33 @@ namespace shadows {
 // A figure over no pixel: NaN, which a report writes as null (never a zero that reads "none").
 inline constexpr double kNoFigure = std::numeric_limits<double>::quiet_NaN();
 
+// A JSON string. Bytes that are not UTF-8 (a file name in another encoding) cannot be
+// JSON text: each is written as the four characters \xNN, as printable() shows it.
+inline std::string jsonQuote(const std::string& s) {
+  std::string q = "\"";
+  for (size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    const size_t length = utf8SequenceLength(s, i);
+    char buf[8];
+    if (c == '"' || c == '\\') {
+      q += '\\';
+      q += static_cast<char>(c);
+    } else if (c < 0x20) {
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      q += buf;
+    } else if (length == 0) {
+      std::snprintf(buf, sizeof buf, "\\\\x%02X", c);
+      q += buf;
+    } else {
+      q.append(s, i, length);
+      i += length;
+      continue;
+    }
+    ++i;
+  }
+  return q + "\"";
+}
+
 class JsonWriter {
  public:
   JsonWriter& beginObject(const std::string& key = {}) { return open(key, '{'); }
@@ -49,7 +76,7 @@ class JsonWriter {
   }
   JsonWriter& value(const std::string& key, const std::string& v) {
     item(key);
-    out_ += quote(v);
+    out_ += jsonQuote(v);
     return *this;
   }
   JsonWriter& value(const std::string& key, const char* v) { return value(key, std::string(v)); }
@@ -61,6 +88,24 @@ class JsonWriter {
     out_ += "null";
     return *this;
   }
+  // A figure over nothing (no fragment filtered, no pixel compared, no live frame): null,
+  // never a zero that reads "none", and `<key>_not_counted` beside it saying why. A goal on it
+  // is not met (exercise.hpp), and the grader and the panel give this reason.
+  JsonWriter& notCounted(const std::string& key, const std::string& why) {
+    value(key, std::optional<long long>());
+    if (!path_.empty() && path_.back() != "#") reasons_[path_.back() + "/" + key] = why;
+    return value(key + "_not_counted", why);
+  }
+  // A number, or where it is not one, the reason notCounted gave (otherwise null).
+  JsonWriter& figure(const std::string& key, std::optional<double> v, const std::string& why) {
+    return v && std::isfinite(*v) ? value(key, *v) : notCounted(key, why);
+  }
+  // Why the figure at `pointer` is null, where notCounted said so.
+  std::optional<std::string> whyNotCounted(const std::string& pointer) const {
+    const auto it = reasons_.find(pointer);
+    if (it == reasons_.end()) return std::nullopt;
+    return it->second;
+  }
   const std::string& str() const { return out_; }
   // A number written so far, by its JSON pointer ("/error/false_lit_pct"; members of objects
   // only, not of arrays): what an exercise's goal reads (lesson/exercise.hpp). Null is NaN;
@@ -69,33 +114,6 @@ class JsonWriter {
     const auto it = numbers_.find(pointer);
     if (it == numbers_.end()) return std::nullopt;
     return it->second;
-  }
-
-  // A JSON string. Bytes that are not UTF-8 (a file name in another encoding) cannot be
-  // JSON text: each is written as the four characters \xNN, as printable() shows it.
-  static std::string quote(const std::string& s) {
-    std::string q = "\"";
-    for (size_t i = 0; i < s.size();) {
-      const auto c = static_cast<unsigned char>(s[i]);
-      const size_t length = utf8SequenceLength(s, i);
-      char buf[8];
-      if (c == '"' || c == '\\') {
-        q += '\\';
-        q += static_cast<char>(c);
-      } else if (c < 0x20) {
-        std::snprintf(buf, sizeof buf, "\\u%04x", c);
-        q += buf;
-      } else if (length == 0) {
-        std::snprintf(buf, sizeof buf, "\\\\x%02X", c);
-        q += buf;
-      } else {
-        q.append(s, i, length);
-        i += length;
-        continue;
-      }
-      ++i;
-    }
-    return q + "\"";
   }
 
  private:
@@ -122,7 +140,7 @@ class JsonWriter {
       first_.back() = false;
       out_ += '\n' + std::string(2 * first_.size(), ' ');
     }
-    if (!key.empty()) out_ += quote(key) + ": ";
+    if (!key.empty()) out_ += jsonQuote(key) + ": ";
   }
   void record(const std::string& key, double v) {
     if (!path_.empty() && path_.back() != "#" && !key.empty())
@@ -132,6 +150,7 @@ class JsonWriter {
   std::vector<bool> first_;
   std::vector<std::string> path_;
   std::map<std::string, double> numbers_;
+  std::map<std::string, std::string> reasons_;
 };
 
 }  // namespace shadows

@@ -42,16 +42,28 @@ struct Exercise {
 struct FigureResult {
   const Figure* figure = nullptr;
   std::optional<double> measured;  // empty or NaN: not measured (no pixel counted, ...)
+  // Why a figure is null over nothing (JsonWriter::notCounted): "no fragment was filtered".
+  // Such a figure is not met. Empty where it is null for another reason (a counter the
+  // context cannot count: no verdict at all, ExerciseRun::grade).
+  std::optional<std::string> not_counted;
   bool met = false;
-  // "false lit % 0.06044 <= 0.07: met"
+  bool known() const { return measured && std::isfinite(*measured); }
+  // "false lit % 0.06044 <= 0.07: met", "filter taps none (no fragment was filtered) <= 16:
+  // not met"
   std::string line() const {
-    char value[32] = "not measured";
-    if (measured && std::isfinite(*measured)) std::snprintf(value, sizeof value, "%.4g", *measured);
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "%s %s %s %g: %s", figure->label.c_str(), value,
+    std::string value = "not measured";
+    if (known()) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.4g", *measured);
+      value = text;
+    } else if (not_counted) {
+      value = "none (" + *not_counted + ")";
+    }
+    char bound[48];
+    std::snprintf(bound, sizeof bound, " %s %g: %s",
                   figure->bound == Figure::Bound::AtMost ? "<=" : ">=", figure->value,
                   met ? "met" : "not met");
-    return buf;
+    return figure->label + " " + value + bound;
   }
 };
 
@@ -75,7 +87,8 @@ inline Verdict evaluate(const Exercise& exercise, const JsonWriter& report) {
     FigureResult r;
     r.figure = &f;
     r.measured = report.number(f.pointer);
-    const bool known = r.measured && std::isfinite(*r.measured);
+    r.not_counted = report.whyNotCounted(f.pointer);
+    const bool known = r.known();
     r.met = known &&
             (f.bound == Figure::Bound::AtMost ? *r.measured <= f.value : *r.measured >= f.value);
     v.met = v.met && r.met;

@@ -119,6 +119,16 @@ struct Frame {
   // Outputs the runner uses: the light frustum the shadow term is valid in (pixels
   // outside it are not counted against the truth).
   std::optional<glm::mat4> light_view_projection;
+  // An omni light's reach (lesson 11), as light_view_projection is a map's frustum: pixels the
+  // cube cannot hold (before its near plane along a face's axis, at or beyond its far) are not
+  // counted either.
+  struct LightReach {
+    glm::vec3 position{0.0f};
+    float near = 0.0f;            // along the face's axis (max |v.x|, |v.y|, |v.z|); 0: none
+    float far = 0.0f;             // along the axis, or the distance itself
+    bool far_along_axis = false;  // a depth cube's faces end at far; a distance store at |v|
+  };
+  std::optional<LightReach> light_reach;
   // The light the truth should use: 0 = a point (hard shadows); a soft-shadow lesson sets
   // the radius of the area light its filter imitates.
   float truth_area_radius = 0.0f;

@@ -157,12 +157,15 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
       why = readSet(args, o.sets);
     } else if (arg == "--settings") {
       if (!args.value(value)) return arg + ": expected a file name";
+      if (isOption(value)) return arg + ": expected a file name, got the option '" + value + "'";
       why = readSettingsFile(value, o.sets);
     } else if (arg == "--truth-from") {
       if (!args.value(value)) return arg + ": expected a file name";
+      if (isOption(value)) return arg + ": expected a file name, got the option '" + value + "'";
       o.truth_from = value;
     } else if (Output* output = outputNamed(arg)) {
       if (!args.value(value)) return arg + ": expected a file name";
+      if (isOption(value)) return arg + ": expected a file name, got the option '" + value + "'";
       if (why = outputProblem(arg, value, output->target); !why.empty()) return why;
       *output->path = value;
     } else {
@@ -170,14 +173,15 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
     }
     if (!why.empty()) return why;
   }
+  // One rule for both: an exercise is judged by the truth, so --no-truth contradicts it.
+  if (o.exercise > 0 && !o.truth) {
+    return std::string(o.grade ? "--grade" : "--exercise") +
+           " judges by the truth: it cannot run with --no-truth";
+  }
   if (o.grade) {
     // A verdict is a headless run measured against the truth, at the READMEs' size.
     o.headless = true;
-    o.truth = true;
     if (!o.size_given) o.width = kExerciseWidth, o.height = kExerciseHeight;
-  }
-  if (o.exercise > 0 && !o.truth) {
-    return "--exercise judges by the truth: it cannot run with --no-truth";
   }
   if (device_given && o.backend != "egl-device") {
     return "--device chooses an EGL device: it needs --backend egl-device";

@@ -109,6 +109,11 @@ TruthInputs ErrorMeasure::gatherInputs() {
   r_.gpu_->gbuffer.set("uViewProjection", r_.cameraProjection(w, h) * r_.cameraView());
   r_.gpu_->gbuffer.set("uHasLightFrustum", r_.told_.light_frustum ? 1 : 0);
   r_.gpu_->gbuffer.set("uLightViewProjection", r_.told_.light_frustum.value_or(glm::mat4(1.0f)));
+  const Frame::LightReach reach = r_.told_.light_reach.value_or(Frame::LightReach{});
+  r_.gpu_->gbuffer.set("uHasLightReach", r_.told_.light_reach ? 1 : 0);
+  r_.gpu_->gbuffer.set("uReachLight", reach.position);
+  r_.gpu_->gbuffer.set("uReach",
+                       glm::vec3(reach.near, reach.far, reach.far_along_axis ? 1.0f : 0.0f));
   frame.drawObjects(r_.gpu_->gbuffer, Objects::All, nullptr);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, job.surface.position.data());

@@ -174,8 +174,9 @@ int ExerciseRun::grade() {
   const Verdict v = evaluate(*chosen_, json);
   // A figure this build cannot measure (05's taps on GL 4.1 and ES: no storage buffers) is no
   // answer either way.
+  // A figure over nothing (no fragment filtered) is an answer: not met, with its reason.
   for (const FigureResult& f : v.figures) {
-    if (!f.measured || !std::isfinite(*f.measured)) {
+    if (!f.known() && !f.not_counted) {
       std::printf("%s exercise %d: no verdict: %s is not measured here (%s)\n", name.c_str(), n,
                   f.figure->label.c_str(), caps().flavour.c_str());
       return 1;

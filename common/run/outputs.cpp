@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <map>
@@ -56,7 +57,9 @@ void Runner::writeReport(JsonWriter& json) {
   // What the shadow costs: the same frame with shadow.off, timed in the same run.
   if (baseline_.timedFrames() > 0) {
     json.value("baseline_frame_ms", baseline_.measure().medianFrameMs());
-    json.value("shadow_overhead", baseline_.overhead());
+    json.figure("shadow_overhead", baseline_.measuredOverhead(),
+                "rests on fewer than " + std::to_string(BaselineFrames::kFramesForRatio) +
+                    " timed frames: give --frames 3 or more");
   }
   json.beginObject("pass_ms");
   for (const auto& [pass, ms] : measure_->medianPassMs()) json.value(pass, ms);
@@ -182,7 +185,9 @@ int Runner::runHeadlessOrWindow() {
   const char* display = std::getenv("DISPLAY");
   const bool has_display = display != nullptr && *display != '\0';
   if (options_.headless || (!has_display && !options_.force_window)) {
-    if (!options_.headless) std::printf("%s: no display, rendering headless\n", name_.c_str());
+    // Said on stderr, as every diagnostic: `--report /dev/stdout` stays the report alone.
+    if (!options_.headless)
+      std::fprintf(stderr, "%s: no display, rendering headless\n", name_.c_str());
     return headless_.run();
   }
   const int result = window_.run();
@@ -193,8 +198,8 @@ int Runner::runHeadlessOrWindow() {
     return 1;
   }
   // A DISPLAY that leads nowhere (a closed ssh tunnel, a stale variable): say so once, go on.
-  std::printf("%s: cannot open a window on DISPLAY=%s (%s), rendering headless\n", name_.c_str(),
-              has_display ? printable(display).c_str() : "", why.c_str());
+  std::fprintf(stderr, "%s: cannot open a window on DISPLAY=%s (%s), rendering headless\n",
+               name_.c_str(), has_display ? printable(display).c_str() : "", why.c_str());
   return headless_.run();
 }
 
@@ -203,22 +208,31 @@ void HeadlessRun::saveScreenshot(int width, int height, const std::string& file)
   glBindFramebuffer(GL_FRAMEBUFFER, r_.window_.is_open ? 0 : r_.gpu_->target->id());
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-  const std::string path =
-      file.empty()
-          ? r_.name_ + "_screenshot_" + std::to_string(++r_.window_.screenshots_taken) + ".png"
-          : file;
-  if (writePng(path, image)) {
-    std::printf("screenshot: %s\n", path.c_str());
-  } else {
-    std::fprintf(stderr, "screenshot: cannot write %s\n", path.c_str());
+  std::string path = file;
+  if (path.empty()) {
+    // Beside the headless pictures (out/, ignored by git), never over an earlier one.
+    std::error_code ec;
+    std::filesystem::create_directories(kScreenshotFolder, ec);
+    do {
+      path = std::string(kScreenshotFolder) + "/" + r_.name_ + "_" +
+             std::to_string(++r_.window_.screenshots_taken) + ".png";
+    } while (std::filesystem::exists(path, ec));
   }
+  // Said on the terminal and under the panel's button: where it went, or why not.
+  std::error_code ec;
+  const std::string where = std::filesystem::absolute(path, ec).string();
+  r_.window_.screenshot_said =
+      writePng(path, image) ? "screenshot: " + path : "screenshot: cannot write " + path;
+  std::fprintf(stderr, "%s%s\n", r_.window_.screenshot_said.c_str(),
+               ec || where == path ? "" : (" (" + where + ")").c_str());
 }
 
 int HeadlessRun::run() {
   // Without --out the picture goes where ./run.sh puts them, out/<lesson>.png (git-ignored):
   // checked against the other outputs like a given --out, before anything is rendered.
   std::string out = r_.options_.out;
-  if (out.empty()) {
+  // A grade writes only what it was asked for: no default picture.
+  if (out.empty() && !r_.options_.grade) {
     std::error_code ec;
     std::filesystem::create_directories("out", ec);
     out = "out/" + r_.name_ + ".png";
@@ -261,14 +275,14 @@ int HeadlessRun::run() {
   if (r_.options_.truthAsked()) r_.measureError();
   if (!writeOutputs(out, image)) return 1;
   const int errors = r_.glErrors();
-  std::printf("%-30s %dx%d  frame %7.2f ms", out.c_str(), r_.options_.width, r_.options_.height,
-              r_.measure_->medianFrameMs());
+  std::printf("%-30s %dx%d  frame %7.2f ms", out.empty() ? r_.name_.c_str() : out.c_str(),
+              r_.options_.width, r_.options_.height, r_.measure_->medianFrameMs());
   const auto& counts = r_.measure_->lastFrameCounts();
   if (const auto it = counts.find("shadow_map_renders"); it != counts.end() && it->second == 0) {
     std::printf(" (map cached)");
   }
-  if (const double overhead = r_.baseline_.overhead(); overhead > 0.0) {
-    std::printf(", %.2fx without shadow", overhead);
+  if (const std::optional<double> overhead = r_.baseline_.measuredOverhead()) {
+    std::printf(", %.2fx without shadow", *overhead);
   }
   const ErrorState& error = r_.errors().truth().error();
   if (error.valid && error.metrics.counted_pixels == 0) {

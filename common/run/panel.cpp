@@ -278,6 +278,10 @@ void Runner::drawPanel(Frame& frame) {
   }
   params_.drawWidgets([](const Param& p) { return p.name == "view" || p.name == "scene"; });
   if (ImGui::Button("Screenshot (F12)")) window_.screenshot_requested = true;
+  if (!window_.screenshot_said.empty()) {
+    ImGui::SameLine();
+    ImGui::TextWrapped("%s", window_.screenshot_said.c_str());
+  }
 
   // The lesson's own idea first and open; what every lesson shares folded below it.
   const auto top = [](const Param& p) { return p.name == "view" || p.name == "scene"; };

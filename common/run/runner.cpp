@@ -346,7 +346,7 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
     ProgramVariants::takeUsed();  // only this frame's
     lesson_->render(frame);
     measure_->variants(ProgramVariants::takeUsed());
-    told_ = {frame.light_view_projection, frame.truth_area_radius, frame.medium,
+    told_ = {frame.light_view_projection, frame.light_reach, frame.truth_area_radius, frame.medium,
              frame.shadow_sampling};
     if (texels) {
       frame.mode = texel_mode;
@@ -391,6 +391,11 @@ void Runner::resetGlState() {
 #if !SHADOWS_GLES
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
 #endif
+}
+
+std::string Runner::screenshot() {
+  headless_.saveScreenshot(options_.width, options_.height, {});
+  return window_.screenshot_said;
 }
 
 Image Runner::readImage() const {

@@ -56,6 +56,7 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& options);
 // What a lesson's last frame told the runner (Frame's outputs).
 struct FrameOutputs {
   std::optional<glm::mat4> light_frustum;
+  std::optional<Frame::LightReach> light_reach;
   float truth_area_radius = 0.0f;
   std::optional<AirMedium> medium;
   std::optional<ShadowSampling> shadow_sampling;
@@ -86,6 +87,9 @@ class Runner final {
   ErrorMeasure& errors() { return errors_; }
   const ErrorMeasure& errors() const { return errors_; }
   Image readImage() const;
+  // Saves the picture as a window's F12 does (out/screenshots/<lesson>_N.png, a new N each
+  // time); returns the line said on stderr and under the panel's button.
+  std::string screenshot();
   std::vector<float> renderVisibility();
   // Renders `mode` into the float target and returns its red channel (visibility, air).
   std::vector<float> renderRed(const std::string& mode);

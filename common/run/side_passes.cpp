@@ -49,6 +49,14 @@ double BaselineFrames::overhead() const {
   return base > 0.0 ? r_.measure_->medianFrameMs() / base : 0.0;
 }
 
+std::optional<double> BaselineFrames::measuredOverhead() const {
+  if (timedFrames() < kFramesForRatio || r_.measure_->timedFrames() < kFramesForRatio) {
+    return std::nullopt;
+  }
+  const double ratio = overhead();
+  return ratio > 0.0 ? std::optional<double>(ratio) : std::nullopt;
+}
+
 const std::vector<TexelPixel>* TexelPass::measure() {
   Runner& r = r_;
   std::string key = r.errors().key();

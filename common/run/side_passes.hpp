@@ -27,6 +27,10 @@ class BaselineFrames {
   void render();
   // Median frame over median baseline frame (0 before any baseline frame).
   double overhead() const;
+  // The report's and the summary line's ratio: only where both medians rest on at least
+  // kFramesForRatio timed frames (one frame at load is no cost: 0.002 was seen); else none.
+  static constexpr size_t kFramesForRatio = 3;
+  std::optional<double> measuredOverhead() const;
   const Measure& measure() const { return *measure_; }
   Measure& measure() { return *measure_; }
   size_t timedFrames() const { return measure_ ? measure_->timedFrames() : 0; }

@@ -58,7 +58,8 @@ class RunnerWindow {
   std::string error;  // why none opened, as GLFW said it
   bool screenshot_requested = false;
   int screenshots_taken = 0;
-  glm::vec2 mouse{-1.0f};  // Runner::setMouse: a headless test's mouse
+  std::string screenshot_said;  // the last screenshot: where it went, or why not
+  glm::vec2 mouse{-1.0f};       // Runner::setMouse: a headless test's mouse
   bool mouse_down = false;
   // The panel's column right of the picture, in framebuffer pixels (0: over the picture, or
   // hidden), and the whole framebuffer the panel is drawn into.

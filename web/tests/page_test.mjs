@@ -108,15 +108,15 @@ function nativeRun(sets, out, extra = ['--no-truth']) {
   return spawnSync(native, args, { encoding: 'utf8', env: { ...process.env, MESA_GLES_VERSION_OVERRIDE: '3.0' } });
 }
 
-// Renders `settle` frames, asks for a screenshot (the F12 key's: <lesson>_screenshot_N.png in
-// the page's file system), returns it decoded.
+// Renders `settle` frames, asks for a screenshot (the F12 key's: out/screenshots/<lesson>_N.png
+// in the page's file system), returns it decoded.
 const shotsTaken = new Map();
 async function screenshot(page, name, settle = 3) {
   const frames = await page.evaluate('shadowsPage.frames');
   await page.waitFor(`shadowsPage.frames >= ${frames + settle}`);
   const n = (shotsTaken.get(page) ?? 0) + 1;
   shotsTaken.set(page, n);
-  const file = `/${lesson}_screenshot_${n}.png`;
+  const file = `/out/screenshots/${lesson}_${n}.png`;
   await page.evaluate('Module._shadows_screenshot()');
   await page.waitFor(`Module.FS.analyzePath('${file}').exists`);
   const b64 = await page.evaluate(`(() => {
@@ -347,6 +347,18 @@ try {
     page.console = page.console.filter((c) => !/size=8192x8192/.test(c.text));
     await checkClean(page, '?size=8192x8192');
     await page.close();
+    // A size the browser draws but whose truth and read-backs a page cannot hold (4096x4096
+    // showed std::bad_alloc after the first frame; 3000x3000 is within every side's limit):
+    // refused up front as well (issue 53, 1).
+    const big = await open(browser, `${server.url}${lesson}.html?size=3000x3000&hide-panel`);
+    await big.waitFor('shadowsPage.frames >= 3 || shadowsPage.errors.length > 0');
+    const bigSaid = await big.evaluate(`({notices: shadowsPage.notices, width: Module.canvas.width})`);
+    if (!/size=3000x3000: a page holds the truth/.test(bigSaid.notices[0] ?? '') || bigSaid.width >= 3000) {
+      fail(`?size=3000x3000: page says ${JSON.stringify(bigSaid.notices)}, canvas ${bigSaid.width} wide`);
+    }
+    big.console = big.console.filter((c) => !/size=3000x3000/.test(c.text));
+    await checkClean(big, '?size=3000x3000');
+    await big.close();
   }
 } finally {
   await browser.close();
