@@ -188,7 +188,7 @@ class ShadowVolumes final : public Lesson {
              .figures = exact,
              .hint = "z-pass counts from the eye, and the near plane cut the face the eye "
                      "entered through. Count from the other end (slide 39)."},
-            {.title = "The same shadows with fewer triangles (slides 46-47)",
+            {.title = "The same shadows with fewer triangles (slides 47-48)",
              .goal = "Every caster's triangles cast a volume of their own: 33 thousand volume "
                      "triangles. Get the same shadows (both errors 0.05 % or less) with at most "
                      "1000 volume triangles.",
