@@ -71,6 +71,12 @@ std::string readSet(Arguments& args, std::vector<std::string>& sets) {
   return {};
 }
 
+std::string readFileName(Arguments& args, std::string& out) {
+  if (!args.value(out)) return args.flag() + ": expected a file name";
+  if (isOption(out)) return args.flag() + ": expected a file name, got the option '" + out + "'";
+  return {};
+}
+
 bool isOption(const std::string& value) {
   return value.size() > 2 && value.rfind("--", 0) == 0;
 }

@@ -44,6 +44,8 @@ std::string readSize(Arguments& args, int& width, int& height, int minSide = 1);
 
 // --set name=value, appended to `sets` (checked later by Params::assign, which knows the names).
 std::string readSet(Arguments& args, std::vector<std::string>& sets);
+// A flag's file name (--out, --settings, ...): "" or the line saying it is missing.
+std::string readFileName(Arguments& args, std::string& out);
 // A flag's value that is itself an option (`--size`): the value was left out. A file of such a
 // name is given as `./--name`.
 bool isOption(const std::string& value);

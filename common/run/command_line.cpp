@@ -156,16 +156,13 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
     } else if (arg == "--set") {
       why = readSet(args, o.sets);
     } else if (arg == "--settings") {
-      if (!args.value(value)) return arg + ": expected a file name";
-      if (isOption(value)) return arg + ": expected a file name, got the option '" + value + "'";
+      if (why = readFileName(args, value); !why.empty()) return why;
       why = readSettingsFile(value, o.sets);
     } else if (arg == "--truth-from") {
-      if (!args.value(value)) return arg + ": expected a file name";
-      if (isOption(value)) return arg + ": expected a file name, got the option '" + value + "'";
+      if (why = readFileName(args, value); !why.empty()) return why;
       o.truth_from = value;
     } else if (Output* output = outputNamed(arg)) {
-      if (!args.value(value)) return arg + ": expected a file name";
-      if (isOption(value)) return arg + ": expected a file name, got the option '" + value + "'";
+      if (why = readFileName(args, value); !why.empty()) return why;
       if (why = outputProblem(arg, value, output->target); !why.empty()) return why;
       *output->path = value;
     } else {

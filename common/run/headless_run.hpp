@@ -19,10 +19,10 @@ class HeadlessRun {
   // The picture (to `out`) and the --report, --truth-out, --error-out, --truth-job and
   // --truth-result asked for; false (and one line on stderr) when any cannot be written.
   bool writeOutputs(const std::string& out, const Image& image);
-  // What is on the target (or the window) as a PNG: `file`, or out/screenshots/<lesson>_N.png,
-  // N the first number not taken; the line saying where (or why not) goes to stderr and to
+  // What is on the target (or the window) as a PNG: out/screenshots/<lesson>_N.png, N the
+  // first number not taken; the line saying where (or why not) goes to stderr and to
   // RunnerWindow::screenshot_said, under the panel's button.
-  void saveScreenshot(int width, int height, const std::string& file);
+  void saveScreenshot(int width, int height);
   static constexpr const char* kScreenshotFolder = "out/screenshots";
 
  private:

@@ -203,28 +203,24 @@ int Runner::runHeadlessOrWindow() {
   return headless_.run();
 }
 
-void HeadlessRun::saveScreenshot(int width, int height, const std::string& file) {
+void HeadlessRun::saveScreenshot(int width, int height) {
   Image image{width, height, std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 4)};
   glBindFramebuffer(GL_FRAMEBUFFER, r_.window_.is_open ? 0 : r_.gpu_->target->id());
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-  std::string path = file;
-  if (path.empty()) {
-    // Beside the headless pictures (out/, ignored by git), never over an earlier one.
-    std::error_code ec;
-    std::filesystem::create_directories(kScreenshotFolder, ec);
-    do {
-      path = std::string(kScreenshotFolder) + "/" + r_.name_ + "_" +
-             std::to_string(++r_.window_.screenshots_taken) + ".png";
-    } while (std::filesystem::exists(path, ec));
-  }
-  // Said on the terminal and under the panel's button: where it went, or why not.
+  // Beside the headless pictures (out/, ignored by git), never over an earlier one.
   std::error_code ec;
-  const std::string where = std::filesystem::absolute(path, ec).string();
+  std::filesystem::create_directories(kScreenshotFolder, ec);
+  std::string path;
+  do {
+    path = std::string(kScreenshotFolder) + "/" + r_.name_ + "_" +
+           std::to_string(++r_.window_.screenshots_taken) + ".png";
+  } while (std::filesystem::exists(path, ec));
+  // Said under the panel's button, and on the terminal with the folder it is in.
   r_.window_.screenshot_said =
       writePng(path, image) ? "screenshot: " + path : "screenshot: cannot write " + path;
-  std::fprintf(stderr, "%s%s\n", r_.window_.screenshot_said.c_str(),
-               ec || where == path ? "" : (" (" + where + ")").c_str());
+  std::fprintf(stderr, "%s (in %s)\n", r_.window_.screenshot_said.c_str(),
+               std::filesystem::current_path(ec).string().c_str());
 }
 
 int HeadlessRun::run() {

@@ -394,7 +394,7 @@ void Runner::resetGlState() {
 }
 
 std::string Runner::screenshot() {
-  headless_.saveScreenshot(options_.width, options_.height, {});
+  headless_.saveScreenshot(options_.width, options_.height);
   return window_.screenshot_said;
 }
 

@@ -215,7 +215,7 @@ bool RunnerWindow::frame() {
       GlErrorLog::poll();
       if (screenshot_requested) {
         screenshot_requested = false;
-        r_.headless_.saveScreenshot(window_w, h, {});  // as Runner::screenshot
+        r_.headless_.saveScreenshot(window_w, h);  // as Runner::screenshot
       }
       if (frames_left > 0 && --frames_left == 0) {
         // The same outputs as a headless run: the window as shown (the picture, and the
