@@ -245,7 +245,7 @@ class Cascades final : public Lesson {
     json.value("shimmer_pixels", off_() ? 0LL : shimmer_counted_);
     // The same, frame to frame, while input moved the eye (a window's drag; 0 frames headless).
     json.value("shimmer_live_frames", live_frames_);
-    json.figure("shimmer_live_pct", live_frames_ > 0 ? live_shimmer_pct_ : std::nullopt,
+    json.figure("shimmer_live_pct", live_shimmer_pct_,
                 live_frames_ > 0 ? "no sunlit pixel inside the cascades in the last moving frame"
                                  : "no frame moved the eye (a window's drag measures it)");
   }
@@ -259,7 +259,7 @@ class Cascades final : public Lesson {
     } else {
       ImGui::TextWrapped("shimmer: none counted (no sunlit pixel inside the cascades)");
     }
-    if (live_frames_ > 0 && live_shimmer_pct_) {
+    if (live_shimmer_pct_) {
       ImGui::TextWrapped("while you drag: %.4f %% flipped in the last frame the eye moved",
                          *live_shimmer_pct_);
     }

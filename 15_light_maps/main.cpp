@@ -316,14 +316,15 @@ class LightMaps final : public Lesson {
     return chosen;
   }
   int samplesPerTexel() const {
-    const int k = std::max(1, static_cast<int>(std::lround(std::sqrt(samples_()))));
+    const int k = TruthLight::sampleSide(samples_());
     return k * k;
   }
-  // The rays the bake casts from a texel: none in map mode, one to a point light (radius 0, as
-  // the truth traces it), else the samples rounded to a square.
+  // The rays the bake casts from a texel, as the truth traces them (one to a point light);
+  // none in map mode.
   int raysPerTexel() const {
-    if (mode_() == Mode::Map) return 0;
-    return radius_() > 0.0f ? samplesPerTexel() : 1;
+    return mode_() == Mode::Map
+               ? 0
+               : TruthLight{.radius = radius_(), .samples = samples_()}.raysPerPoint();
   }
   long long bytes() const {  // the texture (2 bytes a texel) and the coordinates (8 a vertex)
     return atlas_.texels() * 2 + static_cast<long long>(uv_.width()) * uv_.height() * 8;

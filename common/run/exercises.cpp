@@ -173,8 +173,8 @@ int ExerciseRun::grade() {
   runner_.writeReport(json);
   const Verdict v = evaluate(*chosen_, json);
   // A figure this build cannot measure (05's taps on GL 4.1 and ES: no storage buffers) is no
-  // answer either way.
-  // A figure over nothing (no fragment filtered) is an answer: not met, with its reason.
+  // answer either way; a figure over nothing (no fragment filtered) is one: not met, its reason
+  // in the line.
   for (const FigureResult& f : v.figures) {
     if (!f.known() && !f.not_counted) {
       std::printf("%s exercise %d: no verdict: %s is not measured here (%s)\n", name.c_str(), n,

@@ -107,8 +107,6 @@ void LightMapBaker::start(BakeRequest request, bool wait) {
   state_ = BakeState{};
   state_.id = id;
   state_.stage = BakeState::Stage::kRunning;
-  const int k =
-      std::max(1, static_cast<int>(std::lround(std::sqrt(std::max(job.light.samples, 1)))));
   // The texels the tracer casts rays from: on a surface that faces the light (countedPixel).
   long long texels = 0;
   for (size_t i = 0; i < job.surface.position.size(); ++i) {
@@ -116,7 +114,7 @@ void LightMapBaker::start(BakeRequest request, bool wait) {
     float ndotl = 0.0f;
     texels += countedPixel(job.surface, i, job.light, p, n, ndotl) ? 1 : 0;
   }
-  state_.rays = texels * (job.light.radius > 0.0f ? k * k : 1);
+  state_.rays = texels * job.light.raysPerPoint();
 
   auto running = std::make_unique<Running>();
   const CacheDirectory dir = cacheDirectory();

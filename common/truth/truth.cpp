@@ -196,7 +196,7 @@ std::vector<float> Truth::visibility(const SurfaceBuffer& surface, const TruthLi
   }
 
   const bool area = light.radius > 0.0f;
-  const int k = std::max(1, static_cast<int>(std::lround(std::sqrt(std::max(light.samples, 1)))));
+  const int k = TruthLight::sampleSide(light.samples);
   const float kf = static_cast<float>(k);
   const float count = kf * kf;
   glm::vec3 axisT(0.0f), axisB(0.0f);

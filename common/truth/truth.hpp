@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <glm/glm.hpp>
@@ -29,6 +30,12 @@ struct TruthLight {
   bool directional = false;
   float radius = 0.0f;  // area light: disk radius around position, facing direction; 0 = point
   int samples = 64;     // area light: stratified samples (rounded to a square number)
+  // The side of the stratified grid: round(sqrt(samples)), at least 1.
+  static int sampleSide(int samples) {
+    return std::max(1, static_cast<int>(std::lround(std::sqrt(std::max(samples, 1)))));
+  }
+  // Rays a surface point casts to this light: one to a point, the grid's k x k to a disk.
+  int raysPerPoint() const { return radius > 0.0f ? sampleSide(samples) * sampleSide(samples) : 1; }
 };
 
 // A participating medium for the truth (lesson 08, seed 000 "Combining Shadows with
