@@ -68,6 +68,9 @@ class SoftShadows final : public Lesson {
     search_taps_ = p.addInt("pcss.search_taps", 16, 1, 64, "Poisson points of the blocker search");
     skip_umbra_ =
         p.addBool("pcss.skip_umbra", true, "every search tap a blocker: umbra, no filter");
+    search_cut_ = p.addChoice("pcss.search_cut", {"nearest_caster", "near_plane"}, "nearest_caster",
+                              "where the search cone is cut: at the nearest caster, or at the "
+                              "light's near plane (Fernando's sketch)");
     kernel_ = p.addChoice("pcf.kernel", kKernels, "poisson", "lesson 05's filter kernel");
     taps_ = p.addInt("pcf.taps", 16, 1, 64,
                      "grid: up to N x N of this; poisson: this many (4 at least)");
@@ -254,7 +257,7 @@ class SoftShadows final : public Lesson {
   float searchFrom(const Frame& f) const {
     const float near_plane = pcss::lightDistance(map_.lightProjection(), 0.0f);
     const Bounds casters = f.scene.bounds(/*castersOnly=*/true);
-    if (casters.empty()) return near_plane;
+    if (casters.empty() || search_cut_.name() == "near_plane") return near_plane;
     float nearest = 1e30f;
     for (int k = 0; k < 8; ++k) {
       const glm::vec3 corner((k & 1) ? casters.max.x : casters.min.x,
@@ -281,7 +284,7 @@ class SoftShadows final : public Lesson {
   Sampler compare_, linear_, depths_;
   CounterBuffer counters_;
   ChoiceParam<SoftMode> mode_;
-  ChoiceParam<> kernel_, filter_;
+  ChoiceParam<> kernel_, filter_, search_cut_;
   FloatParam light_radius_, fixed_radius_, dimming_, factor_, units_;
   IntParam search_taps_, taps_;
   BoolParam skip_umbra_, count_;
