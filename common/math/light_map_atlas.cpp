@@ -152,7 +152,8 @@ std::string lightMapRefusal(const LightMapAtlas& plan) {
     return {};
   }
   const auto mb = [](long long texels) {
-    return std::to_string(texels * kLightMapBytesPerTexel / 1000000) + " MB";
+    // Rounded, not cut: 754,974,720 bytes is 755 MB.
+    return std::to_string((texels * kLightMapBytesPerTexel + 500000) / 1000000) + " MB";
   };
   char density[32];
   std::snprintf(density, sizeof density, "%g", plan.texels_per_unit);
