@@ -6,12 +6,16 @@
 # error and timing of every picture (the numbers the README quotes). Frame times are of
 # static frames: where a lesson caches its shadow map, they leave the map pass out. Lessons
 # that report the size of a map step (06, 07) get it too, in world units at the nearest and
-# farthest caster.
+# farthest caster. A line with --window is the window itself, picture and panel's column, as a
+# student sees it: run under a virtual X server (xvfb-run), with frames enough for the panel to
+# show the error and the cost.
 # Usage: scripts/pictures.sh [lesson-prefix ...]   (default: every lesson)
+#   PICTURES_ONLY="panel.png ..." renders only those, keeping the other rows of numbers.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${BUILD_DIR:-build}
 size=${PICTURE_SIZE:-480x360}
+only=${PICTURES_ONLY:-}
 selected=("$@")
 for list in [0-9][0-9]_*/pictures.txt; do
   lesson=$(dirname "$list")
@@ -27,10 +31,22 @@ for list in [0-9][0-9]_*/pictures.txt; do
   steps=0  # 06 and 07 report one map step at the casters: two more columns
   while read -r file flags; do
     [[ -z $file || $file == \#* ]] && continue
+    if [[ -n $only && " $only " != *" $file "* ]]; then
+      kept=$(grep -F "| $file |" "$table" 2>/dev/null || true)
+      if [[ -n $kept ]]; then
+        rows+=("$kept")
+        grep -q 'air rel' "$table" && air=1
+        grep -q 'step at nearest' "$table" && steps=1
+        continue
+      fi
+    fi
     report=$(mktemp)
+    run=("$build/$lesson" --headless)
+    if [[ " $flags " == *" --window "* ]]; then
+      run=(xvfb-run -a -s "-screen 0 2560x1600x24" "$build/$lesson")
+    fi
     # shellcheck disable=SC2086  # flags are a list of words on purpose
-    "$build/$lesson" --headless --size "$size" --frames 3 --out "$lesson/pictures/$file" \
-      --report "$report" $flags
+    "${run[@]}" --size "$size" --frames 3 --out "$lesson/pictures/$file" --report "$report" $flags
     num() { grep -o "\"$1\": [-0-9.e+]*" "$report" | head -1 | awk '{printf "%.3g", $2}'; }
     # The truth and error views show a ray-traced picture, not the technique: no frame time.
     frame=$(num frame_ms)

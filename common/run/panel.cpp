@@ -15,6 +15,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -162,7 +163,13 @@ void Runner::drawPanel(Frame& frame) {
       name_.c_str(), nullptr,
       column ? ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse
              : 0);
-  ImGui::PushItemWidth(-ImGui::GetFontSize() * 8.5f);  // room for the longest labels
+  // Room for this lesson's longest label (lightmap.texels_per_unit was cut at 8.5 em), the
+  // widgets keeping at least 45 % of the width.
+  float label = ImGui::GetFontSize() * 8.5f;
+  for (const Param& p : params_.all())
+    label = std::max(label, ImGui::CalcTextSize(p.name.c_str()).x);
+  label += ImGui::GetStyle().ItemInnerSpacing.x;
+  ImGui::PushItemWidth(-std::min(label, 0.55f * ImGui::GetContentRegionAvail().x));
   ImGui::TextWrapped("%s", lesson_->title().c_str());
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   ImGui::TextWrapped("%s", lesson_->seeds().c_str());
@@ -190,11 +197,14 @@ void Runner::drawPanel(Frame& frame) {
   // The lesson's exercises, one a choice: its goal, each figure now, met or not, on the last
   // truth measured, under the error it is judged by.
   if (const std::vector<Exercise> all = lesson_->exercises(); !all.empty() && options_.truth) {
-    std::vector<std::string> names = {"none: explore freely"};
+    std::vector<std::string> names = {"no exercise: explore freely"};
     for (size_t i = 0; i < all.size(); ++i)
-      names.push_back(std::to_string(i + 1) + ": " + all[i].title);
+      names.push_back("exercise " + std::to_string(i + 1) + ": " + all[i].title);
     const int shown = std::clamp(options_.exercise, 0, static_cast<int>(all.size()));
-    if (ImGui::BeginCombo("exercise", names[static_cast<size_t>(shown)].c_str())) {
+    // The whole width, its name in the choices: a title cut at the labels' column read
+    // "1: Just enough map for th".
+    ImGui::SetNextItemWidth(-FLT_MIN);
+    if (ImGui::BeginCombo("##exercise", names[static_cast<size_t>(shown)].c_str())) {
       for (int k = 0; k < static_cast<int>(names.size()); ++k) {
         if (ImGui::Selectable(names[static_cast<size_t>(k)].c_str(), k == shown) && k != shown) {
           exercise_.choose(k);

@@ -204,6 +204,11 @@ bool RunnerWindow::frame() {
           !r_.errors_.truth().running() && !ImGui::IsAnyItemActive() && !baking) {
         r_.errors_.begin();
       }
+      // The last frame waits for a truth being traced, and draws its panel anew, so that a
+      // window's picture shows the panel's error, not "measuring..." (README panel pictures; a
+      // truth not begun, as under --orbit, is not waited for).
+      const bool tracing = !r_.options_.hide_panel && r_.errors_.truth().running();
+      if (frames_left == 1 && !tracing) r_.gpu_->panel_input = true;
       // The panel's "shadow: N x the frame without it": one frame in 32 is rendered again,
       // off-screen, with shadow.off.
       r_.renderInto(0, w, h, r_.params_.at("view").choice(), true, !r_.options_.hide_panel);
@@ -217,7 +222,7 @@ bool RunnerWindow::frame() {
         screenshot_requested = false;
         r_.headless_.saveScreenshot(window_w, h);  // as Runner::screenshot
       }
-      if (frames_left > 0 && --frames_left == 0) {
+      if (frames_left > 0 && !(frames_left == 1 && tracing) && --frames_left == 0) {
         // The same outputs as a headless run: the window as shown (the picture, and the
         // panel's column beside it), and the report, truth and error pictures asked for, all
         // or none.
