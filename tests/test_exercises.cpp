@@ -219,6 +219,9 @@ TEST(Exercises, WhatIsNotTheStudentsToSetIsRefusedInOneLine) {
            {"04_bias_offset", "--grade 1 --set shadow.size=4096", "not shadow.size"},
            {"04_bias_offset", "--grade 1 --set camera.pos=0,1,2", "not camera.pos"},
            {"09_shadow_volumes", "--grade 1 --set scene=torus_pyramid", "not scene"},
+           // Shadows past the last cascade are dropped: a far of 30 met the goal by covering
+           // less (issue 54, 2).
+           {"12_cascades", "--grade 2 --set cascades.far=30", "not cascades.far"},
            {"04_bias_offset", "--grade 7", "has exercises 1..2"},
            {"03_shadow_map_basic", "--exercise 3", "has exercises 1..2"},
            {"04_bias_offset", "--exercise 1 --grade 2", "--grade: a second, different exercise"},
@@ -243,6 +246,17 @@ TEST(Exercises, AGoalOverAFigureOfNothingIsNotMet) {
   EXPECT_NE(last.find(": NOT MET: "), std::string::npos) << r.output;
   EXPECT_NE(last.find("filter taps none (no fragment was filtered"), std::string::npos) << last;
   EXPECT_NE(last.find("<= 16: not met"), std::string::npos) << last;
+}
+
+// A goal met by a slider that measures less, or that is not the lesson's idea, is no answer
+// (issue 54, 2; docs/EXERCISES.md, "No shortcut"): 07's constant bias alone meets the errors
+// from about 400 steps, past what the goal allows.
+TEST(Exercises, AShortcutFoundOnceIsNotMet) {
+  const Result r =
+      run("07_multidigit_16bit", "--grade 2 --set bias.factor=0 --set bias.steps=400 --frames 1");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(lastLine(r.output).find("constant bias steps 400 <= 256: not met"), std::string::npos)
+      << r.output;
 }
 
 // A grade writes only what it is asked for: without --out, no out/<lesson>.png in the working
