@@ -104,7 +104,7 @@ class ProjectedPlanar final : public Lesson {
     ImGui::End();
   }
 
-  // docs/EXERCISES.md has the intended solutions.
+  // instructor/SOLUTIONS.md has the intended solutions (kept off the students' site).
   std::vector<Exercise> exercises() const override {
     using B = Figure::Bound;
     return {{.title = "The shadow fights the floor (slides 13 and 18)",

@@ -141,7 +141,7 @@ class ProjectiveTexture final : public Lesson {
     }
   }
 
-  // docs/EXERCISES.md has the intended solutions.
+  // instructor/SOLUTIONS.md has the intended solutions (kept off the students' site).
   std::vector<Exercise> exercises() const override {
     using B = Figure::Bound;
     return {{.title = "Where a projector with no depth test is right",

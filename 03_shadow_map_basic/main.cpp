@@ -75,7 +75,7 @@ class ShadowMapBasic final : public Lesson {
     if (f.mode != "visibility") map_.drawInset(f);
   }
 
-  // docs/EXERCISES.md has the intended solutions.
+  // instructor/SOLUTIONS.md has the intended solutions (kept off the students' site).
   std::vector<Exercise> exercises() const override {
     using B = Figure::Bound;
     return {{.title = "Just enough map for the dueling frusta",

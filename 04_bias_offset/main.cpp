@@ -145,7 +145,7 @@ class BiasOffset final : public Lesson {
                         units_() * depthStep());
   }
 
-  // docs/EXERCISES.md has the intended solutions.
+  // instructor/SOLUTIONS.md has the intended solutions (kept off the students' site).
   std::vector<Exercise> exercises() const override {
     using B = Figure::Bound;
     return {{.title = "Acne and peter panning, both, where the light grazes",

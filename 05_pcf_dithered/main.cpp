@@ -172,7 +172,7 @@ class PcfDithered final : public Lesson {
     }
   }
 
-  // docs/EXERCISES.md has the intended solutions.
+  // instructor/SOLUTIONS.md has the intended solutions (kept off the students' site).
   std::vector<Exercise> exercises() const override {
     using B = Figure::Bound;
     return {{.title = "64 taps only where the penumbra is",

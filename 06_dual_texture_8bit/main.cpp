@@ -71,7 +71,7 @@ class DualTexture8bit final : public Lesson {
     ImGui::Text("pass 2 lit %s fragments", countText(lit_fragments_).c_str());
   }
 
-  // docs/EXERCISES.md has the intended solutions.
+  // instructor/SOLUTIONS.md has the intended solutions (kept off the students' site).
   std::vector<Exercise> exercises() const override {
     using B = Figure::Bound;
     const std::vector<Figure> right = {

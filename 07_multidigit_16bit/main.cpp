@@ -76,7 +76,7 @@ class MultiDigit16bit final : public Lesson {
                        countText(lit_[1]).c_str());
   }
 
-  // docs/EXERCISES.md has the intended solutions.
+  // instructor/SOLUTIONS.md has the intended solutions (kept off the students' site).
   std::vector<Exercise> exercises() const override {
     using B = Figure::Bound;
     return {{.title = "How near can the near plane come? (16 bits)",

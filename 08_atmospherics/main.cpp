@@ -126,7 +126,7 @@ class Atmospherics final : public Lesson {
     ImGui::Text("slice fragments passed %s", countText(passed_).c_str());
   }
 
-  // docs/EXERCISES.md has the intended solutions.
+  // instructor/SOLUTIONS.md has the intended solutions (kept off the students' site).
   std::vector<Exercise> exercises() const override {
     using B = Figure::Bound;
     return {{.title = "The fewest slices",

@@ -170,7 +170,7 @@ class ShadowVolumes final : public Lesson {
     }
   }
 
-  // docs/EXERCISES.md has the intended solutions.
+  // instructor/SOLUTIONS.md has the intended solutions (kept off the students' site).
   std::vector<Exercise> exercises() const override {
     using B = Figure::Bound;
     const std::vector<Figure> exact = {

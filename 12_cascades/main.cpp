@@ -277,7 +277,7 @@ class Cascades final : public Lesson {
     ImGui::TextWrapped("cascades: %s", slices.c_str());
   }
 
-  // docs/EXERCISES.md has the intended solutions.
+  // instructor/SOLUTIONS.md has the intended solutions (kept off the students' site).
   std::vector<Exercise> exercises() const override {
     using B = Figure::Bound;
     return {{.title = "Stop the crawl",

@@ -186,7 +186,7 @@ class FilterableMaps final : public Lesson {
     }
   }
 
-  // docs/EXERCISES.md has the intended solutions.
+  // instructor/SOLUTIONS.md has the intended solutions (kept off the students' site).
   std::vector<Exercise> exercises() const override {
     using B = Figure::Bound;
     return {{.title = "One lookup for twenty-five taps",

@@ -248,7 +248,7 @@ class LightMaps final : public Lesson {
     }
   }
 
-  // docs/EXERCISES.md has the intended solutions.
+  // instructor/SOLUTIONS.md has the intended solutions (kept off the students' site).
   std::vector<Exercise> exercises() const override {
     using B = Figure::Bound;
     return {{.title = "A bake on a budget",

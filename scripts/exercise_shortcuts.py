@@ -2,7 +2,7 @@
 """Looks for shortcuts in the exercises: every slider an exercise allows, moved alone from the
 exercise's starting point to each end of its range and five points between (each choice, each
 bool), graded by the truth. A move that meets a goal should be the lesson's idea, not a slider
-that measures less (docs/EXERCISES.md, "No shortcut").
+that measures less (instructor/SOLUTIONS.md, "No shortcut").
 
 Usage: scripts/exercise_shortcuts.py [lesson-prefix ...]   (BUILD_DIR, default build)
 Prints each move that meets its goal, then how many moves were graded. Takes a few minutes.

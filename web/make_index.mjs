@@ -2,12 +2,15 @@
 // its page and README) and each lesson's README as an HTML page beside its pictures, with the
 // documents under docs/ they link to, all from the repository's own files: a lesson's line
 // and picture are its row in the top README's table.
-//   node web/make_index.mjs REPO_ROOT SITE_DIR LESSON...
+// The instructor's solutions (instructor/SOLUTIONS.md) are left out unless asked for.
+//   node web/make_index.mjs REPO_ROOT SITE_DIR [--with-solutions] LESSON...
 import fs from 'node:fs';
 import path from 'node:path';
 import { Marked } from 'marked';
 
-const [root, site, ...lessons] = process.argv.slice(2);
+const [root, site, ...rest] = process.argv.slice(2);
+const withSolutions = rest.includes('--with-solutions');
+const lessons = rest.filter((a) => a !== '--with-solutions');
 const readme = fs.readFileSync(path.join(root, 'README.md'), 'utf8');
 const escape = (s) => s.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
 // Markdown's `code` and [text](link) as plain text for one line of HTML.
@@ -25,6 +28,7 @@ function sitePath(repoPath) {
     return `lessons/${m[1]}/pictures/${m[2]}`;
   }
   if ((m = /^docs\/([^/]+)\.md$/.exec(p))) return `docs/${m[1]}.html`;
+  if (p === 'instructor/SOLUTIONS.md' && withSolutions) return 'instructor/SOLUTIONS.html';
   if ((m = /^docs\/([^/]+\.(png|svg|csv))$/.exec(p))) return `docs/${m[1]}`;
   return null;
 }
@@ -149,6 +153,7 @@ for (const doc of documents) {
     fs.copyFileSync(path.join(root, doc), path.join(site, sitePath(doc)));
   }
 }
+if (withSolutions) page('instructor/SOLUTIONS.md', 'Solutions, for the instructor: real-time shadows');
 for (const file of fs.readdirSync(path.join(root, 'docs'))) {
   if (/\.(png|svg|csv)$/.test(file)) {
     fs.mkdirSync(path.join(site, 'docs'), { recursive: true });

@@ -278,7 +278,7 @@ try {
   }
 
   // An exercise graded in the page, from a link with a solution and one without: the verdict
-  // under the canvas is the native grader's (docs/EXERCISES.md's solution for 04).
+  // under the canvas is the native grader's (instructor/SOLUTIONS.md's solution for 04).
   if (lesson === '04_bias_offset') {
     for (const [query, verdict] of [['exercise=1&bias.mode=gradient', 'MET'], ['exercise=1', 'NOT MET']]) {
       const page = await open(browser, `${server.url}${lesson}.html?${query}`);

@@ -83,6 +83,53 @@ for (const lesson of lessons) {
 }
 if (new Set(shown).size !== shown.length) fail('index: two lessons show the same picture');
 
+// The students' site holds no solution (issue 55, 1): no command line of
+// instructor/SOLUTIONS.md, no sentence of its answers, in any file of the site; built with
+// --with-solutions, the instructor's page has them all (so the search can find them).
+const solutions = [];
+const answers = fs.readFileSync(path.join(root, 'instructor/SOLUTIONS.md'), 'utf8');
+for (const [, text] of answers.matchAll(/^- [0-9]{2}, exercise [0-9]+: ((?:.|\n(?!- |\n))*)/gm)) {
+  const words = text.replace(/`build\/[^`]*`/g, '').replace(/[`*]/g, '').replace(/\s+/g, ' ').trim();
+  const commands = [...text.matchAll(/`build\/[0-9a-z_]+ (--grade [0-9]+(?: --set [^ `]+)+)`/g)].map((m) => m[1]);
+  solutions.push({ words: words.slice(0, 48), commands });
+}
+if (solutions.length < 20) fail(`instructor/SOLUTIONS.md: only ${solutions.length} solutions read`);
+const files = [];
+const all = (dir) => {
+  for (const e of fs.readdirSync(dir, { withFileTypes: true })) {
+    const p = path.join(dir, e.name);
+    if (e.isDirectory()) all(p);
+    else if (/\.(html|js|mjs|md|txt|json)$/.test(p)) files.push(p);
+  }
+};
+const text = (file) => fs.readFileSync(file, 'utf8').replace(/<[^>]*>/g, '').replace(/&amp;/g, '&')
+    .replace(/&quot;/g, '"').replace(/&#39;/g, "'").replace(/&lt;/g, '<').replace(/&gt;/g, '>').replace(/\s+/g, ' ');
+const leaks = (dir) => {
+  files.length = 0;
+  all(dir);
+  const found = [];
+  for (const file of files) {
+    const t = text(file);
+    for (const s of solutions) {
+      for (const c of [s.words, ...s.commands]) {
+        if (t.includes(c)) found.push(`${path.relative(dir, file)}: "${c}"`);
+      }
+    }
+  }
+  return found;
+};
+for (const leak of leaks(site)) fail(`the students' site carries a solution: ${leak}`);
+const instructor = fs.mkdtempSync(path.join(os.tmpdir(), 'site_instructor_'));
+execFileSync(process.execPath,
+             [path.join(root, 'web/make_index.mjs'), root, instructor, '--with-solutions', ...lessons]);
+const shownAnswers = leaks(instructor);
+const expected = solutions.reduce((n, s) => n + 1 + s.commands.length, 0);
+if (shownAnswers.length < expected) {
+  fail(`--with-solutions: ${shownAnswers.length} of ${expected} answers found in the instructor's site`);
+}
+if (!fs.existsSync(path.join(instructor, 'instructor/SOLUTIONS.html'))) fail('--with-solutions wrote no SOLUTIONS.html');
+fs.rmSync(instructor, { recursive: true, force: true });
+
 fs.rmSync(site, { recursive: true, force: true });
 console.log(failures ? `site: ${failures} failures` : `site: ok (${pages.length} pages, ${links} links)`);
 process.exit(failures ? 1 : 0);
