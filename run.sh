@@ -9,20 +9,27 @@ if [[ ${1:-} == web ]]; then
   scripts/setup_pages.sh
   exec node web/serve.mjs build/web/site "${2:-8024}"
 fi
-# Only the lessons: the tests and the benchmark are test.sh's business.
-scripts/setup.sh --lessons
-
+# The lessons, from their sources (nothing need be built to name one): ./run.sh 3 is 03.
 lessons=()
 for dir in [0-9][0-9]_*/; do
-  [[ -x build/${dir%/} ]] && lessons+=("${dir%/}")
+  [[ -f $dir/main.cpp ]] && lessons+=("${dir%/}")
 done
 lesson=01_projected_planar
 named=0
 if [[ $# -gt 0 && $1 != -* ]]; then
   named=1
-  for l in "${lessons[@]}"; do [[ $l == "$1"* ]] && lesson=$l && break; done
-  [[ $lesson == "$1"* ]] || { echo "run.sh: no lesson '$1'; lessons: ${lessons[*]}"; exit 2; }
+  asked=$1
+  [[ $asked =~ ^[0-9]$ ]] && asked=0$asked
+  for l in "${lessons[@]}"; do [[ $l == "$asked"* ]] && lesson=$l && break; done
+  [[ $lesson == "$asked"* ]] || { echo "run.sh: no lesson '$1'; lessons: ${lessons[*]}"; exit 2; }
   shift
+fi
+# Only what runs: the one lesson (every lesson when a display-less run renders them all). The
+# tests and the benchmark are test.sh's business. On a built tree this is quiet and quick.
+if [[ -z ${DISPLAY:-} ]] && ((named == 0 && $# == 0)); then
+  scripts/setup.sh --lessons
+else
+  scripts/setup.sh --lessons "$lesson"
 fi
 
 if [[ -n ${DISPLAY:-} ]]; then

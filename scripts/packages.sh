@@ -4,8 +4,12 @@ ensure_packages() {
   local who=$1 p
   shift
   local missing=()
+  # One dpkg-query for them all (a launch of ./run.sh waits on this): the installed ones.
+  local installed
+  installed=$(dpkg-query -W -f='${Package} ${Status}\n' "$@" 2>/dev/null |
+    awk '/install ok installed/ {print $1}' || true)
   for p in "$@"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+    grep -qx -- "$p" <<<"$installed" || missing+=("$p")
   done
   ((${#missing[@]})) || return 0
   if [[ $(id -u) -eq 0 ]]; then
