@@ -288,6 +288,13 @@ void Runner::drawPanel(Frame& frame) {
   }
   params_.drawWidgets([](const Param& p) { return p.name == "view" || p.name == "scene"; });
   if (ImGui::Button("Screenshot (F12)")) window_.screenshot_requested = true;
+  // An eye dragged out of the room or out of sight comes back (the C key too); not where an
+  // exercise holds the camera.
+  ImGui::SameLine();
+  const Exercise* held = exercise_.chosen();
+  ImGui::BeginDisabled(held != nullptr && !held->camera_free);
+  if (ImGui::Button("Camera back (C)")) resetCamera();
+  ImGui::EndDisabled();
   if (!window_.screenshot_said.empty()) {
     ImGui::SameLine();
     ImGui::TextWrapped("%s", window_.screenshot_said.c_str());

@@ -143,6 +143,13 @@ void Runner::loadScene() {
   }
 }
 
+void Runner::resetCamera() {
+  const Scene& preset = host_.scene();
+  params_.setVec3(params_.at("camera.pos"), preset.camera.position);
+  params_.setVec3(params_.at("camera.target"), preset.camera.target);
+  params_.setFloat(params_.at("camera.fov"), preset.camera.fov);
+}
+
 std::string Runner::applySets(const std::vector<std::string>& sets) {
   // The scene goes first: its preset sets light and camera defaults the others may override.
   for (const auto& s : sets) {

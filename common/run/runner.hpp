@@ -126,6 +126,9 @@ class Runner final {
   void releaseGl();  // all of them, in an order that keeps the context alive to the end
   static void resetGlState();
   void loadScene();
+  // The eye back where the scene's preset puts it (camera.pos, .target, .fov): the panel's
+  // button and the window's C key, for an eye dragged out of sight.
+  void resetCamera();
   Light currentLight() const;
   // The object a point light sits on (within 1e-5 of the scene's radius), or "": the report's
   // light_on_surface and the panel's warning.

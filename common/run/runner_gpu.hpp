@@ -53,7 +53,7 @@ struct Runner::Gpu {
   // when the sliders last moved, the frames a scripted run has left.
   struct WindowLoop {
     double last_x = 0, last_y = 0;
-    bool h_was_down = false;
+    bool h_was_down = false, c_was_down = false;
     bool dragging = false;
     std::chrono::steady_clock::time_point changed_at{};
     std::optional<std::chrono::steady_clock::time_point> moved_at;

@@ -5,6 +5,7 @@
 
 #include "core/json.hpp"
 #include "gl/context.hpp"
+#include "math/orbit.hpp"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -124,8 +125,8 @@ bool RunnerWindow::frame() {
   Runner::Gpu::WindowLoop& loop = r_.gpu_->loop;
   if (glfwWindowShouldClose(window) || loop.frames_left == 0) return false;
   {
-    auto& [last_x, last_y, h_was_down, dragging, changed_at, moved_at, last_key, frames_left,
-           frame_number, outputs_failed] = loop;
+    auto& [last_x, last_y, h_was_down, c_was_down, dragging, changed_at, moved_at, last_key,
+           frames_left, frame_number, outputs_failed] = loop;
     glfwPollEvents();
     const ImGuiIO& io = ImGui::GetIO();
     // Orbit the eye around its target with the left mouse button, zoom with the wheel.
@@ -135,19 +136,16 @@ bool RunnerWindow::frame() {
     const Exercise* ex = r_.exercise_.chosen();
     const bool camera_locked = ex != nullptr && !ex->camera_free;
     const bool down = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    Param& pos = r_.params_.at("camera.pos");
+    const glm::vec3 target = r_.params_.at("camera.target").v();
+    // Every move of the eye stays in front of the walls and floor it started in front of.
+    const auto moveEye = [&](glm::vec3 eye) {
+      r_.params_.setVec3(pos, orbit::keepInFront(eye, r_.scene(), r_.scene().camera.position));
+    };
     if (down && !io.WantCaptureMouse && !camera_locked) {
       if (dragging) {
-        Param& pos = r_.params_.at("camera.pos");
-        const glm::vec3 target = r_.params_.at("camera.target").v();
-        glm::vec3 offset = pos.v() - target;
-        const float radius = glm::length(offset);
-        float yaw = std::atan2(offset.x, offset.z) - 0.01f * static_cast<float>(x - last_x);
-        float pitch = std::asin(std::clamp(offset.y / std::max(radius, 1e-6f), -1.0f, 1.0f)) +
-                      0.01f * static_cast<float>(y - last_y);
-        pitch = std::clamp(pitch, -1.5f, 1.5f);
-        offset = radius * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
-                                    std::cos(pitch) * std::cos(yaw));
-        r_.params_.setVec3(pos, target + offset);
+        moveEye(orbit::turn(pos.v(), target, static_cast<float>(x - last_x),
+                            static_cast<float>(y - last_y)));
       }
       dragging = true;
     } else {
@@ -155,19 +153,15 @@ bool RunnerWindow::frame() {
     }
     last_x = x, last_y = y;
     if (r_.options_.orbit > 0) {  // a scripted drag: the same turn, without a mouse
-      Param& pos = r_.params_.at("camera.pos");
-      const glm::vec3 target = r_.params_.at("camera.target").v();
-      const glm::vec3 offset = pos.v() - target;
-      r_.params_.setVec3(pos, target + glm::vec3(glm::rotate(glm::mat4(1.0f),
-                                                             glm::radians(float(r_.options_.orbit)),
-                                                             glm::vec3(0.0f, 1.0f, 0.0f)) *
-                                                 glm::vec4(offset, 0.0f)));
+      moveEye(orbit::turn(pos.v(), target, -100.0f * glm::radians(float(r_.options_.orbit)), 0.0f));
     }
     if (io.MouseWheel != 0.0f && !io.WantCaptureMouse && !camera_locked) {
-      Param& pos = r_.params_.at("camera.pos");
-      const glm::vec3 target = r_.params_.at("camera.target").v();
-      r_.params_.setVec3(pos, target + (pos.v() - target) * std::pow(0.9f, io.MouseWheel));
+      moveEye(target + (pos.v() - target) * std::pow(0.9f, io.MouseWheel));
     }
+    // C brings the camera back to the scene's (on the key's press), where it may move.
+    const bool c_down = glfwGetKey(window, GLFW_KEY_C) == GLFW_PRESS;
+    if (c_down && !c_was_down && !io.WantTextInput && !camera_locked) r_.resetCamera();
+    c_was_down = c_down;
     if (glfwGetKey(window, GLFW_KEY_F12) == GLFW_PRESS) screenshot_requested = true;
     // H hides or shows the panel (on the key's press, not while it is held).
     const bool h_down = glfwGetKey(window, GLFW_KEY_H) == GLFW_PRESS;
