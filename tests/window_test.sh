@@ -74,6 +74,32 @@ if (w, h) != (1280, 720):
     sys.exit(f"the default window is {w}x{h}, not 1280x720")
 PY
 echo "default window ok"
+# An exercise keeps the window its size (issue 55, 4): the grader's 640x480 picture in a
+# corner, the goal and its sliders above, the verdict beside; the live figures are the
+# grader's to the digit.
+exercise_lesson=$(dirname "$first")/04_bias_offset
+xvfb-run -a -s "-screen 0 1400x900x24" "$exercise_lesson" --window --exercise 1 --frames 2 \
+  --out "$out/exercise.png" --report "$out/exercise.json"
+"$exercise_lesson" --grade 1 --report "$out/graded.json" >/dev/null || true
+python3 - "$out" "$(dirname "$0")" <<'PY'
+import json, sys
+sys.path.insert(0, sys.argv[2])
+from png_read import read_png
+w, h, rows = read_png(sys.argv[1] + "/exercise.png")
+if (w, h) != (1280, 720):
+    sys.exit(f"an exercise's window is {w}x{h}, not 1280x720")
+live = json.load(open(sys.argv[1] + "/exercise.json"))
+graded = json.load(open(sys.argv[1] + "/graded.json"))
+if live["size"] != [640, 480]:
+    sys.exit(f"an exercise's picture is {live['size']}, not the grader's 640x480")
+if live["exercise"]["measured"] != graded["exercise"]["measured"]:
+    sys.exit(f"live {live['exercise']['measured']} against graded {graded['exercise']['measured']}")
+# The strip above the picture is the goal's window (dark), not the sky the lesson clears to.
+top = [rows[20][x * 4:x * 4 + 3] for x in range(300, 600, 10)]
+if sum(sum(p) for p in top) / len(top) > 200:
+    sys.exit("nothing drawn above the exercise's picture")
+PY
+echo "exercise window ok"
 # Outputs without --out, or --frames alone, are honoured too: the run stops after its frames
 # (a timeout turns "ignored, the window stays open" into a failure) and writes what was asked.
 timeout 120 xvfb-run -a -s "-screen 0 1024x768x24" "$first" --window --size 320x240 --frames 2 \

@@ -91,8 +91,11 @@ std::string ExerciseRun::choose(int n) {
   }
   // Where the truth already measured is this very start, its verdict now, not "measuring...".
   if (chosen_ && runner_.errors_.truth().key() == runner_.errors_.key()) judge();
-  // Judged on the grader's picture size (a page fits its canvas so too: page_main.cpp).
+    // Judged on the grader's picture size: a page fits its canvas so (page_main.cpp); a window
+    // keeps its size and draws the picture at that size in a corner (RunnerWindow::frame).
+#ifdef __EMSCRIPTEN__
   if (n > 0 && !runner_.options_.size_given) runner_.window_.fitExercise();
+#endif
   return problem;
 }
 

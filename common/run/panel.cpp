@@ -213,55 +213,7 @@ void Runner::drawPanel(Frame& frame) {
       ImGui::EndCombo();
     }
   }
-  if (const Exercise* ex = exercise_.chosen()) {
-    ImGui::Separator();
-    ImGui::TextWrapped("Exercise %d: %s", options_.exercise, ex->title.c_str());
-    ImGui::TextWrapped("%s", ex->goal.c_str());
-    if (options_.width != kExerciseWidth || options_.height != kExerciseHeight) {
-      ImGui::TextDisabled("(judged on a %dx%d picture, as --grade is; this one is %dx%d)",
-                          kExerciseWidth, kExerciseHeight, options_.width, options_.height);
-    }
-    std::string allowed;
-    for (const std::string& a : ex->allowed) allowed += (allowed.empty() ? "" : ", ") + a;
-    const auto wrapped = [](ImVec4 colour, const std::string& text) {
-      ImGui::PushStyleColor(ImGuiCol_Text, colour);
-      ImGui::TextWrapped("%s", text.c_str());
-      ImGui::PopStyleColor();
-    };
-    const ImVec4 met_colour{0.4f, 1.0f, 0.4f, 1.0f}, unmet_colour{1.0f, 0.45f, 0.4f, 1.0f};
-    wrapped(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled),
-            "move: " + allowed + (ex->camera_free ? ", the camera" : " (the camera stays)"));
-    const Verdict& v = exercise_.verdict();
-    if (!exercise_.judged()) {
-      ImGui::TextDisabled("measuring...");
-    } else {
-      for (const FigureResult& f : v.figures) wrapped(f.met ? met_colour : unmet_colour, f.line());
-      wrapped(
-          v.met ? met_colour : unmet_colour,
-          std::string(v.met ? "MET" : "not met yet") +
-              (errors_.truth().key() == errors_.key() ? "" : " (measured before the last change)"));
-      // After a minute without it, the hint.
-      if (!v.met && !ex->hint.empty() && ImGui::GetTime() > 60.0) {
-        ImGui::TextWrapped("hint: %s", ex->hint.c_str());
-      }
-    }
-#ifndef __EMSCRIPTEN__
-    // The submission: a file --grade reads back (--settings), named after the lesson.
-    if (ImGui::Button("Save settings")) {
-      const std::string file =
-          name_ + "_exercise" + std::to_string(options_.exercise) + "_settings.txt";
-      const std::string problem = exercise_.save(file);
-      window_.saved = problem.empty()
-                          ? "saved " + file + ": hand it in, or grade it: " + name_ + " --grade " +
-                                std::to_string(options_.exercise) + " --settings " + file
-                          : problem;
-    }
-    if (!window_.saved.empty()) ImGui::TextWrapped("%s", window_.saved.c_str());
-#else
-    // A page's submission is its address: these settings as a link.
-    ImGui::TextWrapped("as a link: %s", exercise_.query().c_str());
-#endif
-  }
+  if (const Exercise* ex = exercise_.chosen(); ex && !window_.exercise_strips) drawExercise(*ex);
   // Where no technique's answer is defined, the panel says so before its numbers.
   ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.2f, 1.0f));
   if (const std::string on = lightOnSurface(); !on.empty()) {
@@ -383,6 +335,93 @@ void Runner::drawPanel(Frame& frame) {
   }
   ImGui::PopItemWidth();
   ImGui::End();
+  // The exercise around the picture, in windows of its own beside the panel's column.
+  if (const Exercise* ex = exercise_.chosen(); ex && window_.exercise_strips) drawExercise(*ex);
+}
+
+void Runner::drawExercise(const Exercise& ex) {
+  const bool strips = window_.exercise_strips;
+  const auto wrapped = [](ImVec4 colour, const std::string& text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, colour);
+    ImGui::TextWrapped("%s", text.c_str());
+    ImGui::PopStyleColor();
+  };
+  const ImVec4 grey = ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled);
+  // Around the picture (its 640x480 in the bottom-left corner): the goal and the sliders in
+  // the strip above it, the verdict beside it; what appears later (the figures, the hint)
+  // below every control, so nothing moves under the cursor.
+  const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
+                                 ImGuiWindowFlags_NoSavedSettings;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float unit = window_.framebuffer.x > 0
+                         ? display.x / static_cast<float>(window_.framebuffer.x)
+                         : 1.0f;  // window units a framebuffer pixel
+  const ImVec2 picture(kExerciseWidth * unit, kExerciseHeight * unit);
+  const float beside = display.x - RunnerWindow::kPanelColumn;  // the picture's part's width
+  if (strips) {
+    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(beside, display.y - picture.y), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(1.0f);
+    ImGui::Begin("##exercise goal", nullptr, fixed);
+  } else {
+    ImGui::Separator();
+  }
+  ImGui::PushID("exercise");
+  ImGui::TextWrapped("Exercise %d: %s", options_.exercise, ex.title.c_str());
+  ImGui::TextWrapped("%s", ex.goal.c_str());
+  if (!strips && (options_.width != kExerciseWidth || options_.height != kExerciseHeight)) {
+    ImGui::TextDisabled("(judged on a %dx%d picture, as --grade is; this one is %dx%d)",
+                        kExerciseWidth, kExerciseHeight, options_.width, options_.height);
+  }
+  // The sliders the exercise lets the student move, right under its goal.
+  if (strips) ImGui::PushItemWidth(std::min(420.0f, 0.5f * beside));
+  params_.drawWidgets([&](const Param& p) { return p.name != "view" && allowedIn(ex, p.name); });
+  if (strips) ImGui::PopItemWidth();
+  wrapped(grey, std::string("the other sliders are locked") +
+                    (ex.camera_free ? "; the camera may move" : "; the camera stays"));
+  if (strips) {
+    ImGui::PopID();
+    ImGui::End();
+    ImGui::SetNextWindowPos(ImVec2(picture.x, display.y - picture.y), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(beside - picture.x, picture.y), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(1.0f);
+    ImGui::Begin("##exercise verdict", nullptr, fixed);
+    ImGui::PushID("exercise");
+  }
+  const ImVec4 met_colour{0.4f, 1.0f, 0.4f, 1.0f}, unmet_colour{1.0f, 0.45f, 0.4f, 1.0f};
+#ifndef __EMSCRIPTEN__
+  // The submission: a file --grade reads back (--settings), named after the lesson.
+  if (ImGui::Button("Save settings")) {
+    const std::string file =
+        name_ + "_exercise" + std::to_string(options_.exercise) + "_settings.txt";
+    const std::string problem = exercise_.save(file);
+    window_.saved = problem.empty()
+                        ? "saved " + file + ": hand it in, or grade it: " + name_ + " --grade " +
+                              std::to_string(options_.exercise) + " --settings " + file
+                        : problem;
+  }
+  if (!window_.saved.empty()) ImGui::TextWrapped("%s", window_.saved.c_str());
+#else
+  // A page's submission is its address: these settings as a link.
+  ImGui::TextWrapped("as a link: %s", exercise_.query().c_str());
+#endif
+  const Verdict& v = exercise_.verdict();
+  if (!exercise_.judged()) {
+    ImGui::TextDisabled("measuring...");
+  } else {
+    for (const FigureResult& f : v.figures) wrapped(f.met ? met_colour : unmet_colour, f.line());
+    wrapped(
+        v.met ? met_colour : unmet_colour,
+        std::string(v.met ? "MET" : "not met yet") +
+            (errors_.truth().key() == errors_.key() ? "" : " (measured before the last change)"));
+    // After a minute without it, the hint: last, under everything.
+    if (!v.met && !ex.hint.empty() && ImGui::GetTime() > 60.0) {
+      ImGui::TextWrapped("hint: %s", ex.hint.c_str());
+    }
+  }
+  ImGui::PopID();
+  if (strips) ImGui::End();
 }
 
 }  // namespace shadows

@@ -136,6 +136,10 @@ class Runner final {
   void renderInto(GLuint target, int width, int height, const std::string& mode, bool timed,
                   bool withPanel);
   void drawPanel(Frame& frame);
+  // The chosen exercise: its goal, the sliders it lets the student move, each figure now and
+  // the verdict, Save settings, the hint; in the panel's column, or around the picture
+  // (RunnerWindow::exercise_strips).
+  void drawExercise(const Exercise& ex);
   void showImage(const Frame& frame, const Image& image);  // a CPU picture over the target
   // The eye's matrices from camera.*: one definition for the lesson and the truth's pass.
   glm::mat4 cameraView() const;

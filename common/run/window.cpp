@@ -58,8 +58,10 @@ bool RunnerWindow::begin() {
     width = 1280 - static_cast<int>(kPanelColumn), height = 720;
   }
 #endif
+#ifdef __EMSCRIPTEN__  // a page's canvas is the grader's picture (exercises.cpp)
   if (r_.options_.exercise > 0 && !r_.options_.size_given)
     width = kExerciseWidth, height = kExerciseHeight;
+#endif
   if (!r_.options_.hide_panel) width += static_cast<int>(kPanelColumn);
   GLFWwindow* window = glfwCreateWindow(
       width, height, (r_.name_ + ": " + r_.lesson_->title()).c_str(), nullptr, nullptr);
@@ -173,10 +175,15 @@ bool RunnerWindow::frame() {
     glfwGetFramebufferSize(window, &window_w, &h);
     column = columnFor(window_w);
     framebuffer = {window_w, h};
-    const int w = window_w - column;  // the picture, left of the panel's column
-    if (w > 0 && h > 0) {
-      r_.options_.width = w, r_.options_.height = h;
-      r_.gpu_->ensureTargets(w, h);
+    int w = window_w - column, ph = h;  // the picture, left of the panel's column
+    // An exercise is judged on the grader's picture: 640x480 in the corner, where the window
+    // has room for the goal above it and the verdict beside it.
+    exercise_strips = r_.exercise_.chosen() != nullptr && !r_.options_.size_given && column > 0 &&
+                      w >= kExerciseWidth + 200 && h >= kExerciseHeight + 160;
+    if (exercise_strips) w = kExerciseWidth, ph = kExerciseHeight;
+    if (w > 0 && ph > 0) {
+      r_.options_.width = w, r_.options_.height = ph;
+      r_.gpu_->ensureTargets(w, ph);
       // The truth is re-measured once the sliders rest. Its rays (a few hundred ms) are traced
       // on a worker thread while frames go on; only the read-back of what it needs (the
       // visibility, shaded and geometry passes) takes the render thread.
@@ -205,7 +212,7 @@ bool RunnerWindow::frame() {
       if (frames_left == 1 && !tracing) r_.gpu_->panel_input = true;
       // The panel's "shadow: N x the frame without it": one frame in 32 is rendered again,
       // off-screen, with shadow.off.
-      r_.renderInto(0, w, h, r_.params_.at("view").choice(), true, !r_.options_.hide_panel);
+      r_.renderInto(0, w, ph, r_.params_.at("view").choice(), true, !r_.options_.hide_panel);
       // After the frame, so the panel's numbers (drawn first thing in a frame) are the
       // lesson's, not the baseline's.
 #ifndef __EMSCRIPTEN__  // a page cannot time it (costSummary)

@@ -32,8 +32,8 @@ class RunnerWindow {
   int end();
   // Resizes the window (a page's canvas, to fill the browser's window): picture and column.
   void fit(int width, int height);
-  // The window of an exercise: the grader's picture (kExerciseWidth x Height) and,
-  // while the panel shows, its column.
+  // A page's canvas in an exercise: the grader's picture (kExerciseWidth x Height) and,
+  // while the panel shows, its column (a window keeps its size: exercise_strips).
   void fitExercise();
   // The picture's part of a framebuffer this wide: all of it less the panel's column, where
   // the window is wide enough for both.
@@ -68,7 +68,12 @@ class RunnerWindow {
   std::set<std::string> open_sections;  // openPanelSection
   std::set<std::string> unfold;         // sections opened once (an exercise's sliders there)
   bool was_column = false;              // the panel's layout last frame (a column or over)
-  std::string saved;                    // the panel's "Save settings": where, or why not
+  // An exercise in a window of its normal size: the grader's 640x480 picture in the bottom-left
+  // corner, the goal and its sliders in the strip above it, the verdict beside it (panel.cpp,
+  // drawExercise). Where the window has no room for them (or --size is given, or a page),
+  // the exercise is in the panel's column.
+  bool exercise_strips = false;
+  std::string saved;  // the panel's "Save settings": where, or why not
 
  private:
   Runner& r_;
