@@ -88,6 +88,8 @@ bool loadGl(GLADloadfunc load) {
   c.float_color_targets = GLAD_GL_EXT_color_buffer_float != 0;
 #ifndef __EMSCRIPTEN__
   c.texture_swizzle = true;  // ES 3.0 has it; WebGL 2 left it out
+#else
+  c.gpu_timer = hasGlExtension("GL_EXT_disjoint_timer_query_webgl2");
 #endif
 #else
   if (gladLoadGL(load) == 0) return false;

@@ -33,6 +33,9 @@ struct Caps {
   bool float_linear = false;          // 32-bit float textures filter LINEAR (ES: an extension)
   bool texture_gather = false;        // textureGather with a depth reference: GL 4.0, ES 3.1
   bool geometry_shaders = false;      // GL 3.2; ES 3.2 only, so never in ES 3.0 or WebGL 2
+  // A page's frame timed on the GPU: WebGL 2's EXT_disjoint_timer_query_webgl2 (a browser's
+  // glFinish returns before its GPU process has drawn, so wall time counts only the calls).
+  bool gpu_timer = false;
   bool seamless_cube_switch = false;  // GL_TEXTURE_CUBE_MAP_SEAMLESS can be switched (GL 3.2);
                                       // ES 3.0 and WebGL 2 always filter across cube faces
   float max_anisotropy = 1.0f;        // anisotropic filtering (GL 4.6, EXT/ARB extensions):

@@ -42,6 +42,12 @@ Measure::Measure() {
   passed_query_ = GlName<deleteQuery>(ids[1]);
 }
 
+namespace {
+// EXT_disjoint_timer_query_webgl2's names (glad's GLES 3.0 loader has no such extension).
+constexpr GLenum kTimeElapsed = 0x88BF, kGpuDisjoint = 0x8FBB;
+constexpr size_t kMostTimersAsked = 8;  // answers come a few frames late
+}  // namespace
+
 void Measure::beginFrame() {
   work_.clear();
   counts_.clear();
@@ -50,10 +56,44 @@ void Measure::beginFrame() {
   if (!enabled_) return;
   glFinish();
   frame_start_ = std::chrono::steady_clock::now();
+  if (caps().gpu_timer && timers_asked_.size() < kMostTimersAsked) {
+    if (timers_free_.empty()) {
+      GLuint id = 0;
+      glGenQueries(1, &id);
+      timers_free_.emplace_back(id);
+    }
+    glBeginQuery(kTimeElapsed, timers_free_.back().id());
+    timing_gpu_ = true;
+  }
+}
+
+void Measure::readGpuTimers() {
+  // In the order asked: an answer not in yet holds the later ones back too.
+  size_t read = 0;
+  for (; read < timers_asked_.size(); ++read) {
+    const GLuint id = timers_asked_[read].id();
+    GLuint available = 0;
+    glGetQueryObjectuiv(id, GL_QUERY_RESULT_AVAILABLE, &available);
+    if (available == 0) break;
+    GLuint nanoseconds = 0;
+    glGetQueryObjectuiv(id, GL_QUERY_RESULT, &nanoseconds);
+    GLint disjoint = 0;
+    glGetIntegerv(kGpuDisjoint, &disjoint);
+    if (disjoint == 0) gpu_frame_ms_.push_back(static_cast<double>(nanoseconds) * 1e-6);
+  }
+  for (size_t k = 0; k < read; ++k) timers_free_.push_back(std::move(timers_asked_[k]));
+  timers_asked_.erase(timers_asked_.begin(), timers_asked_.begin() + static_cast<long>(read));
 }
 
 void Measure::endFrame() {
   if (!enabled_) return;
+  if (timing_gpu_) {
+    glEndQuery(kTimeElapsed);
+    timers_asked_.push_back(std::move(timers_free_.back()));
+    timers_free_.pop_back();
+    timing_gpu_ = false;
+  }
+  if (caps().gpu_timer) readGpuTimers();
   glFinish();
   frame_ms_.push_back(msSince(frame_start_));
   last_work_ = work_;
@@ -129,6 +169,7 @@ void Measure::count(const std::string& name, std::optional<long long> amount) {
 void Measure::clearHistory() {
   frame_ms_.clear();
   pass_ms_.clear();
+  gpu_frame_ms_.clear();
 }
 
 double Measure::medianFrameMs() const {

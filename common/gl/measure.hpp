@@ -30,6 +30,8 @@ struct PassWork {
 void countDrawCall();
 long long drawCallsSoFar();
 
+double median(std::vector<double> values);
+
 class Measure {
  public:
   Measure();
@@ -83,6 +85,11 @@ class Measure {
   void variants(std::vector<std::string> used) { variants_ = std::move(used); }
   const std::vector<std::string>& lastFrameVariants() const { return last_variants_; }
   double lastFrameMs() const { return frame_ms_.empty() ? 0.0 : frame_ms_.back(); }
+  // A page's frames on the GPU (Caps::gpu_timer): each frame's GL_TIME_ELAPSED query, read a
+  // few frames later when its answer is in, the disjoint ones (the GPU's clock reset) dropped.
+  // None where there is no timer.
+  double medianGpuFrameMs() const { return median(gpu_frame_ms_); }
+  size_t gpuTimedFrames() const { return gpu_frame_ms_.size(); }
 
  private:
   bool enabled_ = true;
@@ -94,9 +101,12 @@ class Measure {
   std::map<std::string, long long> counts_, last_counts_;
   std::set<std::string> unavailable_, last_unavailable_;
   std::vector<std::string> variants_, last_variants_;
+  std::vector<GlName<deleteQuery>> timers_free_, timers_asked_;  // the GPU timer's queries
+  bool timing_gpu_ = false;                                      // one is running this frame
+  std::vector<double> gpu_frame_ms_;
+  void readGpuTimers();
 };
 
-double median(std::vector<double> values);
 // A count as the panel says it: the number, or "unavailable on <flavour>".
 std::string countText(const std::optional<long long>& count);
 
