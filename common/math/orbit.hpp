@@ -10,13 +10,17 @@
 
 namespace shadows::orbit {
 
-// The eye turned around `target` by a drag of (dx, dy) pixels: 0.01 radian a pixel, the pitch
-// kept short of straight up or down.
+// A drag's turn: radians a pixel.
+inline constexpr float kRadiansPerPixel = 0.01f;
+
+// The eye turned around `target` by a drag of (dx, dy) pixels, the pitch kept short of
+// straight up or down.
 inline glm::vec3 turn(glm::vec3 eye, glm::vec3 target, float dx, float dy) {
   const glm::vec3 offset = eye - target;
   const float radius = glm::length(offset);
-  const float yaw = std::atan2(offset.x, offset.z) - 0.01f * dx;
-  float pitch = std::asin(std::clamp(offset.y / std::max(radius, 1e-6f), -1.0f, 1.0f)) + 0.01f * dy;
+  const float yaw = std::atan2(offset.x, offset.z) - kRadiansPerPixel * dx;
+  float pitch = std::asin(std::clamp(offset.y / std::max(radius, 1e-6f), -1.0f, 1.0f)) +
+                kRadiansPerPixel * dy;
   pitch = std::clamp(pitch, -1.5f, 1.5f);
   return target + radius * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
                                      std::cos(pitch) * std::cos(yaw));

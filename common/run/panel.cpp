@@ -48,8 +48,6 @@ std::string RunnerWindow::costSummary() const {
   std::snprintf(line, sizeof line, "frame %.2f ms (median of %zu)", r_.measure_->medianFrameMs(),
                 frames);
   std::string summary = line;
-#endif
-#ifndef __EMSCRIPTEN__
   if (const double overhead = r_.baseline_.overhead(); overhead > 0.0) {
     std::snprintf(line, sizeof line, "\nshadow: %.2fx the frame without it (%.2f ms)", overhead,
                   r_.baseline_.measure().medianFrameMs());

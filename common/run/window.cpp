@@ -155,7 +155,8 @@ bool RunnerWindow::frame() {
     }
     last_x = x, last_y = y;
     if (r_.options_.orbit > 0) {  // a scripted drag: the same turn, without a mouse
-      moveEye(orbit::turn(pos.v(), target, -100.0f * glm::radians(float(r_.options_.orbit)), 0.0f));
+      const float drag = -glm::radians(float(r_.options_.orbit)) / orbit::kRadiansPerPixel;
+      moveEye(orbit::turn(pos.v(), target, drag, 0.0f));
     }
     if (io.MouseWheel != 0.0f && !io.WantCaptureMouse && !camera_locked) {
       moveEye(target + (pos.v() - target) * std::pow(0.9f, io.MouseWheel));
