@@ -63,6 +63,18 @@ TEST_F(OutputFiles, ADeviceIsWrittenInPlace) {
   EXPECT_TRUE(fs::is_character_file("/dev/null"));
 }
 
+// A picture for /dev/null is not encoded; for anything else, devices included, it is.
+TEST_F(OutputFiles, OnlyDevNullByAnyNameDiscardsWhatIsWritten) {
+  fs::create_symlink("/dev/null", dir / "null.png");
+  std::ofstream(dir / "file.png") << "x";
+  EXPECT_TRUE(discardsWhatIsWritten("/dev/null"));
+  EXPECT_TRUE(discardsWhatIsWritten((dir / "null.png").string()));
+  EXPECT_FALSE(discardsWhatIsWritten((dir / "file.png").string()));
+  EXPECT_FALSE(discardsWhatIsWritten((dir / "new.png").string()));
+  EXPECT_FALSE(discardsWhatIsWritten("/dev/zero"));
+  EXPECT_FALSE(discardsWhatIsWritten(""));
+}
+
 TEST_F(OutputFiles, OneFileHasOneIdentityHoweverItIsNamed) {
   const std::string a = (dir / "a.png").string();
   const std::string fresh = resolve(a);

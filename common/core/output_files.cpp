@@ -98,6 +98,13 @@ std::string resolveNew(std::string path, std::string& why) {
 
 }  // namespace
 
+bool discardsWhatIsWritten(const std::string& path) {
+  struct stat st {
+  }, null{};
+  return !path.empty() && stat(path.c_str(), &st) == 0 && S_ISCHR(st.st_mode) &&
+         stat("/dev/null", &null) == 0 && st.st_rdev == null.st_rdev;
+}
+
 std::string resolveOutput(const std::string& path, OutputTarget& target) {
   target = {};
   if (path.empty()) return "no file name";

@@ -36,6 +36,10 @@ struct OutputTarget {
 // directory is checked by creating and removing a temporary in it.
 std::string resolveOutput(const std::string& path, OutputTarget& target);
 
+// Whether what is written to `path` is thrown away (it is /dev/null, by any name): a run
+// need not encode an output nobody keeps.
+bool discardsWhatIsWritten(const std::string& path);
+
 // Writes one output (a screenshot): the same rules as a batch of one.
 bool writeOutputFile(const std::string& path, const std::string& bytes);
 

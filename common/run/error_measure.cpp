@@ -34,7 +34,7 @@ std::vector<float> Runner::renderVisibility() {
 
 std::vector<float> Runner::renderRed(const std::string& mode) {
   const int w = options_.width, h = options_.height;
-  gpu_->ensureTargets(w, h);
+  gpu_->ensureFloatTargets(w, h);
   const GLuint fbo = gpu_->float_target->id();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glClearColor(0, 0, 0, 0);
@@ -81,7 +81,7 @@ TruthInputs ErrorMeasure::gatherInputs() {
 
   r_.texels_.measure();  // what the panel shows next to the error, measured when it is
   // The lesson's shadow term, and its shaded picture in float to catch NaN and Inf.
-  in.rendered = r_.renderVisibility();
+  in.rendered = r_.renderVisibility();  // ensures the float targets at this size
   const GLuint fbo = r_.gpu_->float_target->id();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);

@@ -31,6 +31,7 @@ struct Runner::Gpu {
   Texture float_color, float_depth;
   std::unique_ptr<Framebuffer> float_target;
   int size_w = 0, size_h = 0;
+  int float_w = 0, float_h = 0;
   Program gbuffer, image, depth_inset;
   Program texel_heatmap, texel_raw;  // texel_density.frag, the aliasing view and its numbers
   Texture shown;                     // the error or truth image, uploaded for display
@@ -72,6 +73,7 @@ struct Runner::Gpu {
     if (empty_vao != 0) glDeleteVertexArrays(1, &empty_vao);
   }
 
+  // The picture's target, at every size the frame is drawn at.
   void ensureTargets(int w, int h) {
     if (w == size_w && h == size_h) return;
     size_w = w, size_h = h;
@@ -81,6 +83,13 @@ struct Runner::Gpu {
     target->attachColor(target_color);
     target->attachDepthStencil(target_depth);
     target->check();
+  }
+  // The float targets the truth and the texel numbers read back: only when those are measured
+  // (a --no-truth run never allocates their 30 bytes a pixel, which the driver clears: a fifth
+  // of a short headless run on llvmpipe).
+  void ensureFloatTargets(int w, int h) {
+    if (w == float_w && h == float_h) return;
+    float_w = w, float_h = h;
     // The truth reads positions and normals back in float: OpenGL ES renders float colour only
     // with EXT_color_buffer_float (which WebGL 2 offers too).
     if (!caps().float_color_targets) {

@@ -62,7 +62,7 @@ const std::vector<TexelPixel>* TexelPass::measure() {
   std::string key = r.errors().key();
   if (key != key_) {
     const int w = r.options_.width, h = r.options_.height;
-    r.gpu_->ensureTargets(w, h);
+    r.gpu_->ensureFloatTargets(w, h);
     const GLuint fbo = r.gpu_->float_target->id();
     if (!measure_) measure_ = std::make_unique<Measure>();
     std::swap(r.measure_, measure_);
