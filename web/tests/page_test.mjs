@@ -9,14 +9,18 @@
 //    defaults; a site without the tracer or its workers says so and goes on drawing; without
 //    WebGL 2 the page says so instead of showing a blank canvas.
 //
-//   node web/tests/page_test.mjs LESSON SITE_DIR NATIVE_BINARY OUT_DIR
+//   node web/tests/page_test.mjs LESSON SITE_DIR NATIVE_BINARY OUT_DIR [PICTURES_DIR]
+//
+// PICTURES_DIR: the native gles30 pictures of the lesson's defaults at 320x240, one VIEW.png a
+// view (ctest's Flavour.gles30.<lesson> writes them, byte for byte what NATIVE_BINARY renders
+// for each view); without it, each view is rendered by NATIVE_BINARY here.
 import { execFileSync, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import { decodePng, launch, meanDifference, open, pixelsDiffering, sideBySide } from './browser.mjs';
 import { serve } from '../static_server.mjs';
 
-const [lesson, site, native, outDir] = process.argv.slice(2);
+const [lesson, site, native, outDir, picturesDir] = process.argv.slice(2);
 if (!outDir) {
   console.error('usage: page_test.mjs LESSON SITE_DIR NATIVE_BINARY OUT_DIR');
   process.exit(2);
@@ -89,6 +93,13 @@ function compare(web, native, name, view = 'shaded') {
 fs.mkdirSync(outDir, { recursive: true });
 let failures = 0;
 const fail = (what) => { console.log(`FAIL ${lesson}: ${what}`); ++failures; };
+// Where a page test's seconds go (tests/README.md, the suite's budget): each part's wall time.
+let partStart = performance.now();
+const partDone = (what) => {
+  const now = performance.now();
+  console.log(`${lesson} time: ${what} ${((now - partStart) / 1000).toFixed(1)} s (native runs so far ${nativeSeconds.toFixed(1)} s)`);
+  partStart = now;
+};
 
 // The views the lesson offers, as its own --list-params says.
 const views = (() => {
@@ -102,10 +113,40 @@ const views = (() => {
 
 // The native gles30 lesson's picture (and, for bad input, its message and exit code). The
 // truth and error views are Embree's there, three-mesh-bvh's in the page.
+let nativeSeconds = 0;
 function nativeRun(sets, out, extra = ['--no-truth']) {
+  const started = performance.now();
+  try { return nativeRunOnce(sets, out, extra); } finally { nativeSeconds += (performance.now() - started) / 1000; }
+}
+function nativeRunOnce(sets, out, extra) {
   const args = ['--headless', ...extra, '--size', kSize, '--frames', '1', '--out', out];
   for (const s of sets) args.push('--set', s);
   return spawnSync(native, args, { encoding: 'utf8', env: { ...process.env, MESA_GLES_VERSION_OVERRIDE: '3.0' } });
+}
+
+// The native gles30 picture of one view of the defaults at kSize (its truth and error views
+// traced by Embree), from PICTURES_DIR or rendered now; null (and a failure) if there is none.
+const nativePictures = new Map();
+function nativePicture(view, traced) {
+  if (!nativePictures.has(view)) {
+    const ref = path.join(outDir, `${lesson}.${view}.native.png`);
+    if (picturesDir) {
+      const file = path.join(picturesDir, `${view}.png`);
+      if (!fs.existsSync(file)) {
+        fail(`view=${view}: no native gles30 picture ${file}`);
+        return null;
+      }
+      fs.copyFileSync(file, ref);
+    } else {
+      const run = nativeRun([`view=${view}`], ref, traced ? [] : ['--no-truth']);
+      if (run.status !== 0) {
+        fail(`view=${view}: native gles30 run failed (${run.status}): ${run.stderr.trim()}`);
+        return null;
+      }
+    }
+    nativePictures.set(view, decodePng(fs.readFileSync(ref)));
+  }
+  return nativePictures.get(view);
 }
 
 // Renders `settle` frames, asks for a screenshot (the F12 key's: out/screenshots/<lesson>_N.png
@@ -187,13 +228,9 @@ try {
         const tracedNow = await page.evaluate(traces);
         if (!traced && tracedNow !== 0) fail(`view=${view}&no-truth: the page traced ${tracedNow} truths`);
         if (traced && tracedNow !== tracedBefore) fail(`view=${view}: a change of view traced the truth again (${tracedBefore} then ${tracedNow} jobs)`);
-        const ref = path.join(outDir, `${lesson}.${view}.native.png`);
-        const run = nativeRun([`view=${view}`], ref, traced ? [] : ['--no-truth']);
-        if (run.status !== 0) {
-          fail(`view=${view}: native gles30 run failed (${run.status}): ${run.stderr.trim()}`);
-          continue;
-        }
-        const why = compare(web, decodePng(fs.readFileSync(ref)), `view=${view}`, view);
+        const ref = nativePicture(view, traced);
+        if (!ref) continue;
+        const why = compare(web, ref, `view=${view}`, view);
         if (why) fail(`view=${view}: ${why}`);
         if (view === 'shaded') {
           // The control: the same comparison must tell a 1-degree zoom (camera.fov) apart, or
@@ -210,6 +247,7 @@ try {
     } finally {
       await page.close();
     }
+    partDone(traced ? 'the truth views' : 'the views without the truth');
   }
 
   // The page as a student opens it: panel and all, the canvas filling a laptop-sized window
@@ -279,6 +317,7 @@ try {
     if (!underWay.test(status)) fail(`page with panel: the truth is not traced ("${status}")`);
     console.log(`${lesson} page with panel: ${status.split('\n').pop()}`);
     await page.close();
+    partDone('the page with its panel');
   }
 
   // An exercise graded in the page, from a link with a solution and one without: the verdict
@@ -314,8 +353,8 @@ try {
     page.console = page.console.filter((c) => c.text !== expected);  // the line is in the console too
     await checkClean(page, `?${bad}`);
     const web = await screenshot(page, `${lesson}.bad.web.png`);
-    const ref = path.join(outDir, `${lesson}.shaded.native.png`);
-    if (!fs.existsSync(ref) || compare(web, decodePng(fs.readFileSync(ref)), `?${bad}`)) {
+    const ref = nativePicture('shaded', false);
+    if (!ref || compare(web, ref, `?${bad}`)) {
       fail(`?${bad}: the picture is not the defaults' picture`);
     }
     await page.close();
