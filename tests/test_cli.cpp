@@ -396,6 +396,38 @@ TEST_F(Cli, TheTruthJobAndItsTraceGoOutAndComeBack) {
 // visibility outside [0, 1] (other than -1, not counted) or not finite, a file whose size is
 // not what its header says (refused before its bytes are read: a 64 GiB sparse file would take
 // minutes and all memory), and a header of 0x0 pixels (issue 53: 3, 4, 10).
+// The suite's memo of traces (SHADOWS_TRUTH_MEMO): a job traced once is read back byte for
+// byte, in air and under an area light too; a memo cut short is traced anew; without the
+// variable nothing is kept.
+TEST_F(Cli, TheSuitesMemoOfTracesAnswersAsTheTracerDoes) {
+  for (const std::string lesson : {"08_atmospherics", "14_soft_shadows"}) {
+    SCOPED_TRACE(lesson);
+    const fs::path memo = dir / ("memo_" + lesson);
+    const std::string base = "--headless --size 96x72 --frames 1 --out /dev/null --report ";
+    const std::string with = "SHADOWS_TRUTH_MEMO=" + memo.string() + " ";
+    const fs::path traced = dir / "traced.json", first = dir / "first.json",
+                   again = dir / "again.json", cut = dir / "cut.json";
+    ASSERT_EQ(run(lesson, base + traced.string(), "SHADOWS_TRUTH_MEMO= ").exit_code, 0);
+    EXPECT_FALSE(fs::exists(memo));
+    ASSERT_EQ(run(lesson, base + first.string(), with).exit_code, 0);
+    std::vector<fs::path> kept;
+    for (const auto& e : fs::directory_iterator(memo)) kept.push_back(e.path());
+    ASSERT_EQ(kept.size(), 1u);
+    EXPECT_EQ(kept[0].extension(), ".trace");
+    const auto written = fs::last_write_time(kept[0]);
+    ASSERT_EQ(run(lesson, base + again.string(), with).exit_code, 0);
+    EXPECT_EQ(fs::last_write_time(kept[0]), written);  // read, not traced and written again
+    EXPECT_EQ(readReport(first)["error"], readReport(traced)["error"]);
+    EXPECT_EQ(readReport(again)["error"], readReport(traced)["error"]);
+    // Half a memo (a run killed while writing one is never renamed into place, but a disk can
+    // fill): traced anew, the same numbers.
+    fs::resize_file(kept[0], fs::file_size(kept[0]) / 2);
+    ASSERT_EQ(run(lesson, base + cut.string(), with).exit_code, 0);
+    EXPECT_EQ(readReport(cut)["error"], readReport(traced)["error"]);
+    EXPECT_GT(fs::file_size(kept[0]), 100u);
+  }
+}
+
 TEST_F(Cli, TruthFromRefusesWhatNoTracerAnswers) {
   const std::string base = "--headless --size 96x72 --frames 1 --out " + (dir / "x.png").string();
   const fs::path trace = dir / "embree.trace";
