@@ -302,12 +302,12 @@ bool HeadlessRun::writeOutputs(const std::string& out, const Image& image) {
   const TruthMeasure& truth = r_.errors().truth();
   // A picture sent to /dev/null is neither encoded nor written (the tests' runs: a tenth of a
   // short one).
-  const auto picture = [&batch](const std::string& path, auto&& image) {
-    if (!path.empty() && !discardsWhatIsWritten(path)) batch.add(path, encodePng(image()));
+  const auto picture = [&batch](const std::string& path, const Image& shown) {
+    if (!path.empty() && !discardsWhatIsWritten(path)) batch.add(path, encodePng(shown));
   };
-  picture(out, [&] { return image; });
-  picture(r_.options_.truth_out, [&] { return truth.truthImage(); });
-  picture(r_.options_.error_out, [&] { return truth.errorImage(); });
+  picture(out, image);
+  picture(r_.options_.truth_out, truth.truthImage());
+  picture(r_.options_.error_out, truth.errorImage());
   if (!r_.options_.truth_job.empty())
     batch.add(r_.options_.truth_job, {truth.jobBytes().begin(), truth.jobBytes().end()});
   if (!r_.options_.truth_result.empty()) {
