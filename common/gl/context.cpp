@@ -367,7 +367,8 @@ std::vector<std::string> headlessBackends() {
   return backends;
 }
 
-std::unique_ptr<HeadlessContext> createHeadlessContext(const std::string& backend, int device) {
+std::unique_ptr<HeadlessContext> createHeadlessContext(const std::string& backend,
+                                                       [[maybe_unused]] int device) {
 #if SHADOWS_HAVE_EGL
   if (backend == "egl-device") return std::make_unique<EglDeviceContext>(device);
   if (backend == "egl") return std::make_unique<EglSurfacelessContext>();
