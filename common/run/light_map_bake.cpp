@@ -248,17 +248,7 @@ void LightMapBaker::finish() {
       trace.height = r->job.surface.height;
       trace.visibility = visibility;
       // Written whole, then renamed: a bake cut short leaves no half file behind.
-      std::error_code ec;
-      std::filesystem::create_directories(std::filesystem::path(r->cache_path).parent_path(), ec);
-      const std::string part = r->cache_path + "." + std::to_string(getpid()) + ".part";
-      const std::vector<std::uint8_t> bytes = serializeTruthTrace(trace);
-      std::ofstream out(part, std::ios::binary);
-      out.write(reinterpret_cast<const char*>(bytes.data()),
-                static_cast<std::streamsize>(bytes.size()));
-      out.close();
-      if (out && !ec) std::filesystem::rename(part, r->cache_path, ec);
-      const bool kept = out && !ec;
-      if (!kept) std::filesystem::remove(part, ec);
+      const bool kept = keepTruthTrace(r->cache_path, trace);
       state_.message =
           kept ? "kept in " + r->cache_path : "not kept: cannot write " + r->cache_path;
       if (kept) trimCache(std::filesystem::path(r->cache_path).parent_path());

@@ -1,13 +1,11 @@
 // The trace and the metrics of a truth measure, and what is kept of the last one. No GL.
 #include "run/truth_measure.hpp"
 
-#include <unistd.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 
 namespace shadows {
@@ -19,45 +17,35 @@ namespace {
 // budget"): a job traced again within one ctest run (a README's claim and an exercise of the
 // same defaults) is read back, byte for byte the trace, not traced anew. ctest empties the
 // folder as the run starts (the truth_memo fixture), so no trace is older than the tracer
-// that answered it. Unset, as for everyone but the suite, nothing is kept.
-std::string memoPath(const TruthJob& job) {
+// that answered it. Unset, as for everyone but the suite, nothing is kept (and no job's id
+// is taken for it).
+struct Memo {
+  std::string path;
+  std::uint64_t job_id = 0;
+};
+
+std::optional<Memo> memoFor(const TruthJob& job) {
   const char* dir = std::getenv("SHADOWS_TRUTH_MEMO");
-  if (dir == nullptr || *dir == '\0') return {};
+  if (dir == nullptr || *dir == '\0') return std::nullopt;
+  Memo memo{dir, job.id()};
   char name[40];
-  std::snprintf(name, sizeof name, "/%016llx.trace", static_cast<unsigned long long>(job.id()));
-  return dir + std::string(name);
+  std::snprintf(name, sizeof name, "/%016llx.trace", static_cast<unsigned long long>(memo.job_id));
+  memo.path += name;
+  return memo;
 }
 
-std::optional<TruthTrace> readMemo(const std::string& path, const TruthJob& job) {
+std::optional<TruthTrace> readMemo(const Memo& memo, const TruthJob& job) {
   std::error_code ec;
-  if (path.empty() || !std::filesystem::is_regular_file(path, ec)) return std::nullopt;
+  if (!std::filesystem::is_regular_file(memo.path, ec)) return std::nullopt;
   try {
-    TruthTrace trace = readTruthTrace(path);
-    if (trace.job_id == job.id() && trace.width == job.surface.width &&
+    TruthTrace trace = readTruthTrace(memo.path);
+    if (trace.job_id == memo.job_id && trace.width == job.surface.width &&
         trace.height == job.surface.height && trace.air.has_value() == job.air.has_value()) {
       return trace;
     }
-  } catch (const std::exception&) {  // half a file: traced anew
+  } catch (const std::exception&) {  // half a file (a full disk): traced anew
   }
   return std::nullopt;
-}
-
-void writeMemo(const std::string& path, TruthTrace trace, std::uint64_t job_id) {
-  if (path.empty()) return;
-  trace.job_id = job_id;
-  const std::vector<std::uint8_t> bytes = serializeTruthTrace(trace);
-  // Written whole, then renamed: two tests tracing one job never read half a file.
-  const std::string part = path + "." + std::to_string(getpid()) + ".part";
-  std::error_code ec;
-  std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
-  {
-    std::ofstream out(part, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(bytes.data()),
-              static_cast<std::streamsize>(bytes.size()));
-    if (!out) return;
-  }
-  std::filesystem::rename(part, path, ec);
-  if (ec) std::filesystem::remove(part, ec);
 }
 
 }  // namespace
@@ -85,13 +73,18 @@ TruthResult traceTruth(TruthInputs in) {
         trace.air.has_value() != job.air.has_value()) {
       throw TruthMismatch("--truth-from: the trace does not fit its job (size or air)");
     }
-  } else if (const std::string memo = memoPath(job);
-             std::optional<TruthTrace> kept = readMemo(memo, job)) {
-    trace = std::move(*kept);
   } else {
-    out.truth = in.truth ? in.truth : makeTruthTracer(job);
-    trace = out.truth->trace(job);
-    writeMemo(memo, trace, job.id());
+    const std::optional<Memo> memo = memoFor(job);  // the suite's only
+    if (std::optional<TruthTrace> kept = memo ? readMemo(*memo, job) : std::nullopt) {
+      trace = std::move(*kept);
+    } else {
+      out.truth = in.truth ? in.truth : makeTruthTracer(job);
+      trace = out.truth->trace(job);
+      if (memo) {
+        trace.job_id = memo->job_id;
+        keepTruthTrace(memo->path, trace);
+      }
+    }
   }
   if (in.keep_bytes) {
     trace.job_id = job.id();

@@ -2,6 +2,7 @@
 // a browser's build links this file too.
 #include "truth/truth_job.hpp"
 
+#include <unistd.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -386,6 +387,21 @@ TruthTrace readTruthTrace(const std::string& path) {
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument("'" + path + "': " + e.what());
   }
+}
+
+bool keepTruthTrace(const std::string& path, const TruthTrace& trace) {
+  std::error_code ec;
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
+  const std::string part = path + "." + std::to_string(getpid()) + ".part";
+  const std::vector<std::uint8_t> bytes = serializeTruthTrace(trace);
+  std::ofstream out(part, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(bytes.data()),
+            static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (out && !ec) std::filesystem::rename(part, path, ec);
+  const bool kept = out && !ec;
+  if (!kept) std::filesystem::remove(part, ec);
+  return kept;
 }
 
 }  // namespace shadows

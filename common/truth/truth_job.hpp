@@ -95,5 +95,8 @@ std::vector<std::uint8_t> serializeTruthTrace(const TruthTrace& trace);
 TruthTrace parseTruthTrace(const std::vector<std::uint8_t>& bytes);
 // A trace file (a regular file); std::invalid_argument with a one-line reason.
 TruthTrace readTruthTrace(const std::string& path);
+// Writes a trace file whole, then renames it into place (its folder made if missing), so a
+// write cut short or a second writer never leaves half a file under `path`: whether it was kept.
+bool keepTruthTrace(const std::string& path, const TruthTrace& trace);
 
 }  // namespace shadows
