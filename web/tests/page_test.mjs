@@ -22,7 +22,7 @@ import { serve } from '../static_server.mjs';
 
 const [lesson, site, native, outDir, picturesDir] = process.argv.slice(2);
 if (!outDir) {
-  console.error('usage: page_test.mjs LESSON SITE_DIR NATIVE_BINARY OUT_DIR');
+  console.error('usage: page_test.mjs LESSON SITE_DIR NATIVE_BINARY OUT_DIR [PICTURES_DIR]');
   process.exit(2);
 }
 const kSize = '320x240';
@@ -115,13 +115,12 @@ const views = (() => {
 // truth and error views are Embree's there, three-mesh-bvh's in the page.
 let nativeSeconds = 0;
 function nativeRun(sets, out, extra = ['--no-truth']) {
-  const started = performance.now();
-  try { return nativeRunOnce(sets, out, extra); } finally { nativeSeconds += (performance.now() - started) / 1000; }
-}
-function nativeRunOnce(sets, out, extra) {
   const args = ['--headless', ...extra, '--size', kSize, '--frames', '1', '--out', out];
   for (const s of sets) args.push('--set', s);
-  return spawnSync(native, args, { encoding: 'utf8', env: { ...process.env, MESA_GLES_VERSION_OVERRIDE: '3.0' } });
+  const started = performance.now();
+  const run = spawnSync(native, args, { encoding: 'utf8', env: { ...process.env, MESA_GLES_VERSION_OVERRIDE: '3.0' } });
+  nativeSeconds += (performance.now() - started) / 1000;
+  return run;
 }
 
 // The native gles30 picture of one view of the defaults at kSize (its truth and error views
