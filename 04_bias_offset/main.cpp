@@ -108,8 +108,14 @@ class BiasOffset final : public Lesson {
     map_.texture().bind(1);  // raw, through raw_sampler_
     raw_sampler_.bind(1);
     // scene.frag compiled for this bias mode, view and shadow.off: a frame runs only its code.
-    const Program& e =
-        eye_programs_.get({mode_.defines(), f.viewDefines(), define("SHADOW_OFF", map_.off())});
+    // A term whose slider is at 0 adds nothing: its code is left out (issue 56).
+    const bool gradient = mode == Bias::Gradient;
+    const std::vector<std::string> none;
+    const Program& e = eye_programs_.get(
+        {mode_.defines(), f.viewDefines(), define("SHADOW_OFF", map_.off()),
+         gradient ? feature("GRADIENT_TERM", factor != 0.0f && clamp_() != 0.0f) : none,
+         gradient ? feature("CONSTANT_TERM", units != 0.0f) : none,
+         mode == Bias::Normal ? feature("NORMAL_OFFSET", factor != 0.0f) : none});
     e.set("uViewProjection", f.projection * f.view);
     e.set("uShadowMap", 0);
     e.set("uShadowDepth", 1);

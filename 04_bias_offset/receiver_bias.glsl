@@ -35,9 +35,9 @@ float storedDepth(sampler2D depthMap, vec2 uv) {
 
 // Seed 002 (Ogre): the stored depth A plus a bias from the map itself: the depth gradient over
 // the neighbouring texels (clamped, since across a silhouette it jumps to another surface)
-// times `scale`, plus a constant expressed in light space. Returns A + bias.
-float gradientBiasedDepth(sampler2D depthMap, vec2 uv, vec3 p, float scale, float constant,
-                          float clampDistance) {
+// times `scale`. Returns A + that; scene.frag adds the constant, expressed in light space
+// (lightSpaceDepthStep), where bias.units is not 0.
+float gradientBiasedDepth(sampler2D depthMap, vec2 uv, vec3 p, float scale, float clampDistance) {
   vec2 texel = 1.0 / vec2(textureSize(depthMap, 0));
   float centre = storedDepth(depthMap, uv);
   vec4 depths = vec4(storedDepth(depthMap, uv - vec2(texel.x, 0.0)),
@@ -46,5 +46,5 @@ float gradientBiasedDepth(sampler2D depthMap, vec2 uv, vec3 p, float scale, floa
                      storedDepth(depthMap, uv + vec2(0.0, texel.y)));
   vec2 differences = abs(depths.yw - depths.xz);
   float gradient = min(lightSpaceDepthStep(p, clampDistance), max(differences.x, differences.y));
-  return centre + gradient * scale + lightSpaceDepthStep(p, constant);
+  return centre + gradient * scale;
 }

@@ -25,8 +25,10 @@ float shadowTerm(vec3 n, out float margin) {
   vec3 p = vWorld;
 #if BIAS_MODE == BIAS_MODE_NORMAL_OFFSET
   // Normal offset moves the point before projecting it: only this mode projects per fragment.
+#if NORMAL_OFFSET
   p = normalOffsetPoint(p, n, directionToLight(vWorld), uFactor);
-  vec4 c = uShadowMatrix * vec4(p, 1.0);
+#endif
+  vec4 c = uShadowMatrix * vec4(p, 1.0);  // bias.factor=0: vWorld, projected all the same
 #else
   vec4 c = vShadowCoord;  // projected per vertex and interpolated, as in lesson 03
 #endif
@@ -35,7 +37,14 @@ float shadowTerm(vec3 n, out float margin) {
   c.xyz /= c.w;
   c.z = min(c.z, 1.0);  // beyond the far plane: every depth format clamps B to 1
 #if BIAS_MODE == BIAS_MODE_GRADIENT
-  float a = gradientBiasedDepth(uShadowDepth, c.xy, p, uFactor, uUnits, uClamp);
+#if GRADIENT_TERM
+  float a = gradientBiasedDepth(uShadowDepth, c.xy, p, uFactor, uClamp);
+#else  // bias.factor or bias.clamp 0: no slope term, so no neighbours read
+  float a = storedDepth(uShadowDepth, c.xy);
+#endif
+#if CONSTANT_TERM
+  a += lightSpaceDepthStep(p, uUnits);  // bias.units=0: a step of 0, not computed
+#endif
   margin = a - c.z;
   return c.z <= a ? 1.0 : 0.0;
 #else

@@ -147,8 +147,9 @@ class OmniCube final : public Lesson {
     bindParaboloids();
     // Desktop GL filters each face on its own unless told; ES and WebGL always across.
     setSeamlessCubeFiltering(seamless_());
-    const Program& e = eye_programs_.get(
-        {method_.defines(), store_.defines(), f.viewDefines(), define("SHADOW_OFF", off_())});
+    const Program& e = eye_programs_.get({method_.defines(), store_.defines(), f.viewDefines(),
+                                          define("SHADOW_OFF", off_()),
+                                          feature("NORMAL_OFFSET", normal_() > 0.0f)});
     e.set("uViewProjection", f.projection * f.view);
     e.set("uShadowMatrix", glm::mat4(1.0f));
     e.set("uCube", 0);

@@ -23,10 +23,14 @@ uniform vec3 uColor;
 out vec4 outColor;
 
 vec3 offsetPosition(vec3 n) {
+#if NORMAL_OFFSET
   vec3 v = vWorld - uLightPos;
   // Toward the light's side of the surface, by a texel's size here.
   float side = dot(n, v) > 0.0 ? -1.0 : 1.0;
   return vWorld + side * n * uBiasNormal * texelWorldSize(majorDistance(v));
+#else
+  return vWorld;  // bias.normal=0: the same point, without the 5 M a frame of finding it
+#endif
 }
 
 float reference(vec3 v) {

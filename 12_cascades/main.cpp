@@ -49,6 +49,7 @@ struct Atlas {
   std::unique_ptr<Framebuffer> framebuffer;
   std::array<cascade::Fit, kMaxCascades> fits{};
   glm::mat4 view{0.0f};  // the eye the first cascade was rendered for (0: nothing yet)
+  int kept = 0;          // cascades whose boxes were fitted for an earlier eye (a bit each)
 };
 
 class Cascades final : public Lesson {
@@ -182,7 +183,7 @@ class Cascades final : public Lesson {
       f.drawDepthInset(atlas_.texture, 0.0f, 1.0f, /*perspective=*/false, /*fullscreen=*/true);
       return;
     }
-    const Program& e = eyeProgram(f.viewDefines());
+    const Program& e = eyeProgram(f.viewDefines(), atlas_, f.view);
     setEyeUniforms(e, f, atlas_, f.view);
     e.set("uViewProjection", f.projection * f.view);
     f.drawObjects(e, Objects::All);
@@ -355,12 +356,20 @@ class Cascades final : public Lesson {
     glDisable(GL_SCISSOR_TEST);
     PassState{}.apply();
     if ((mask & 1) != 0) atlas.view = view;  // the eye the first cascade follows
+    const int all = (1 << used_count_) - 1;
+    atlas.kept = mask == all ? 0 : (atlas.kept | all) & ~mask;
     atlas_projection_ = f.projection;
   }
 
-  const Program& eyeProgram(const std::vector<std::string>& view) {
-    return eye_programs_.get(
-        {view, define("SHADOW_OFF", off_()), define("KEPT_CASCADES", update_() > 1)});
+  // The blend only where it mixes anything; the next cascade's lookup, where a point can be
+  // outside its own cascade's box, only while a cascade is kept or the slices are another
+  // eye's (the live shimmer's frame before).
+  const Program& eyeProgram(const std::vector<std::string>& view, const Atlas& atlas,
+                            const glm::mat4& cascadeView) {
+    const bool kept = update_() > 1 && (atlas.kept != 0 || cascadeView != atlas.view);
+    return eye_programs_.get({view, define("SHADOW_OFF", off_()), feature("KEPT_CASCADES", kept),
+                              feature("CASCADE_BLEND", used_count_ > 1 && blend_() > 0.0f),
+                              feature("NORMAL_OFFSET", normal_() > 0.0f)});
   }
 
   // What the lookup needs: each cascade's matrix into its tile, the slices, the biases.
@@ -452,7 +461,7 @@ class Cascades final : public Lesson {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     std::vector<std::string> views = f.params.at("view").choices;
     views.push_back("shimmer");  // a view of its own, never offered
-    const Program& e = eyeProgram(choiceDefines("view", views, "shimmer"));
+    const Program& e = eyeProgram(choiceDefines("view", views, "shimmer"), atlas, cascadeView);
     setEyeUniforms(e, f, atlas, cascadeView);
     e.set("uViewProjection", f.projection * f.view);
     f.drawObjects(e, Objects::All);

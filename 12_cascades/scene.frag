@@ -37,9 +37,13 @@ vec3 cascadeCoord(int i, vec3 p) {
 }
 
 float lookup(int i, vec3 n) {
+#if NORMAL_OFFSET
   // Toward the sun's side of the surface, by a texel of this cascade.
   float side = dot(n, uLightDir) > 0.0 ? -1.0 : 1.0;
   vec3 s = cascadeCoord(i, vWorld + side * n * uBiasNormal * uTexelWorld[i]);
+#else
+  vec3 s = cascadeCoord(i, vWorld);  // bias.normal=0: the same point
+#endif
   // Outside its box (a kept cascade's box the eye has moved past, or a slice's corner past the
   // box's float edge): no answer here, the caller asks the next cascade.
   if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) return -1.0;
@@ -65,7 +69,7 @@ float lookupOrNext(int i, vec3 n) {
   float shade = lookup(i, n);
 #if KEPT_CASCADES
   // llvmpipe pays for this lookup on every fragment (34 M of 66 M instructions a frame): only
-  // the variant that keeps cascades (cascades.update > 1) has it.
+  // frames with a kept cascade (cascades.update > 1) have it.
   if (shade < 0.0 && i + 1 < uCount) shade = lookup(i + 1, n);
 #endif
   return shade;
@@ -74,6 +78,9 @@ float lookupOrNext(int i, vec3 n) {
 float shadowTerm(vec3 n, int i, float depth) {
   if (i >= uCount) return 1.0;  // beyond the shadow distance: no map, no shadow
   float shade = lookupOrNext(i, n);
+#if CASCADE_BLEND
+  // llvmpipe runs this block for every fragment even where no depth is past `start` (30 M of
+  // 102 M a frame): at cascades.blend=0, or with one cascade, it is not compiled.
   float start = uSplitFar[i] - uBlend * (uSplitFar[i] - uSplitNear[i]);
   if (i + 1 < uCount && depth > start && shade >= 0.0) {
     float next = lookupOrNext(i + 1, n);
@@ -81,6 +88,7 @@ float shadowTerm(vec3 n, int i, float depth) {
       shade = mix(shade, next, (depth - start) / max(uSplitFar[i] - start, 1e-6));
     }
   }
+#endif
   return shade < 0.0 ? 1.0 : shade;  // in no box at all: unshadowed, not guessed
 }
 

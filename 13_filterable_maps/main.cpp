@@ -135,7 +135,8 @@ class FilterableMaps final : public Lesson {
                            {defineVec2Array("PCF_UNIT_TAPS", unit),
                             "PCF_TAP_COUNT " + std::to_string(unit.size()), "PCF_EARLY_OUT 0"},
                            f.viewDefines(),
-                           define("SHADOW_OFF", map_.off())});
+                           define("SHADOW_OFF", map_.off()),
+                           feature("BLEEDING_REDUCTION", bleeding_() > 0.0f)});
     e.set("uViewProjection", f.projection * f.view);
     e.set("uShadowMatrix", map_.textureMatrix());
     e.set("uShadowMap", 0);

@@ -28,7 +28,11 @@ float chebyshev(vec2 moments, float t) {
   float variance = max(moments.y - moments.x * moments.x, uMinVariance);
   float d = t - moments.x;
   float p = variance / (variance + d * d);
+#if BLEEDING_REDUCTION
   return clamp((p - uBleeding) / (1.0 - uBleeding), 0.0, 1.0);
+#else
+  return clamp(p, 0.0, 1.0);  // vsm.bleeding=0: (p - 0) / 1, without the divide
+#endif
 }
 
 float shadowTerm(vec3 n, vec3 toLight) {

@@ -272,6 +272,32 @@ TEST(Lesson12, KeptFarCascadesCostLittleErrorWhileTheEyeTakesAStep) {
   EXPECT_LE(with_kept.false_shadow_pct, fresh.false_shadow_pct + 0.05);
 }
 
+// The next cascade's lookup (a point outside a kept cascade's box) is compiled only into the
+// frames that keep a cascade (issue 56): not while nothing has moved since every cascade was
+// fitted, whatever cascades.update says.
+TEST(Lesson12, TheNextCascadesLookupRunsOnlyWhileACascadeIsKept) {
+  auto runner = startLesson(kLesson, {"cascades.update=3"}, 160, 120);
+  std::vector<int> kept;
+  for (int i = 0; i <= 4; ++i) {
+    if (i > 0 && i < 4) {
+      ASSERT_EQ(runner->params().assign("camera.pos=" + std::to_string(0.1 * i) + ",1.7,7"), "");
+    }
+    runner->renderFrame();
+    // The frame's own eye pass (the first frame also measures the shimmer's steps).
+    int shown = -1;
+    for (const std::string& v : runner->measure().lastFrameVariants()) {
+      if (v.find("VIEW=VIEW_SHADED") != std::string::npos) {
+        shown = v.find("KEPT_CASCADES=1") != std::string::npos ? 1 : 0;
+      }
+    }
+    kept.push_back(shown);
+  }
+  // Every cascade fitted; the eye moves: the far ones kept, twice, then fitted again; it rests.
+  const std::vector<int> expected = {0, 1, 1, 0, 0};
+  EXPECT_EQ(kept, expected);
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
 // Texels per pixel, cascade by cascade: the practical split gives every slice that shades the
 // road more than one; one map for the whole view gives it a fifth; an even split starves the
 // nearest slice and spends ten times as many on the next.

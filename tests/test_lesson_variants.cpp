@@ -148,6 +148,114 @@ TEST(Variants, Lesson05FullSweepCompilesOneVariantPerKernel) {
   EXPECT_EQ(runner->glErrors(), 0);
 }
 
+// Issue 56: a setting at its neutral value pays nothing for its code. Where a feature's value
+// makes its code change no pixel (a blend of 0, a normal offset of 0), the frame runs the
+// variant without it (gl/program.hpp, feature()), and that variant draws what the code compiled
+// in draws, byte for byte: in every view, and on every scene in the shaded one.
+struct NeutralCase {
+  std::string lesson;
+  std::vector<std::string> neutral;  // the settings that make the feature's code do nothing
+  std::string feature;               // its define
+  std::string working;               // a value where it works: the code compiled in
+};
+
+void PrintTo(const NeutralCase& c, std::ostream* os) {
+  *os << c.lesson << " " << c.feature;
+}
+
+class NeutralCode : public ::testing::TestWithParam<NeutralCase> {
+ protected:
+  void TearDown() override { keepNeutralCode(false); }
+};
+
+// The frame at the current settings, with the neutral code left out and compiled in, and
+// whether it ran the feature's shader at all (a view may draw without it: 12's maps).
+struct BothWays {
+  std::vector<std::uint8_t> without, with;
+  bool ran = false;
+};
+
+BothWays bothWays(Runner& runner, const std::string& feature) {
+  BothWays both;
+  keepNeutralCode(false);
+  runner.renderFrame();
+  both.without = runner.readImage().rgba;
+  both.ran = ranVariantWith(runner, feature + "=");
+  if (both.ran) {
+    EXPECT_TRUE(ranVariantWith(runner, feature + "=0")) << "left out";
+  }
+  keepNeutralCode(true);
+  runner.renderFrame();
+  both.with = runner.readImage().rgba;
+  if (both.ran) {
+    EXPECT_FALSE(ranVariantWith(runner, feature + "=0")) << "compiled in";
+  }
+  keepNeutralCode(false);
+  return both;
+}
+
+TEST_P(NeutralCode, LeftOutAtItsNeutralValueChangesNoPixel) {
+  const NeutralCase& c = GetParam();
+  auto runner = startLesson(c.lesson, c.neutral, 160, 120);
+  for (const std::string& view : runner->params().at("view").choices) {
+    if (view == "truth" || view == "error") continue;  // the tracer's, not the shader's
+    ASSERT_EQ(runner->params().set("view", view), "");
+    const BothWays both = bothWays(*runner, c.feature);
+    EXPECT_EQ(both.without, both.with) << view;
+  }
+  ASSERT_EQ(runner->params().set("view", "shaded"), "");
+  for (const std::string& scene : runner->params().at("scene").choices) {
+    runner->params().resetToDefaults();
+    ASSERT_EQ(runner->applySets({"scene=" + scene}), "");
+    ASSERT_EQ(runner->applySets(c.neutral), "");
+    const BothWays both = bothWays(*runner, c.feature);
+    EXPECT_TRUE(both.ran) << scene << ": the shaded view's shader has " << c.feature;
+    EXPECT_EQ(both.without, both.with) << scene;
+  }
+  // Where the setting works, its code runs, kept or not (KEPT_CASCADES works on frames the eye
+  // moved: test_lesson12.cpp).
+  if (!c.working.empty()) {
+    ASSERT_EQ(runner->params().assign(c.working), "");
+    runner->renderFrame();
+    EXPECT_TRUE(ranVariantWith(*runner, c.feature + "=1")) << c.working;
+  }
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Lessons, NeutralCode,
+    ::testing::Values(
+        NeutralCase{"04_bias_offset",
+                    {"bias.mode=gradient", "bias.factor=0"},
+                    "GRADIENT_TERM",
+                    "bias.factor=1"},
+        NeutralCase{"04_bias_offset",
+                    {"bias.mode=gradient", "bias.clamp=0"},
+                    "GRADIENT_TERM",
+                    "bias.clamp=0.25"},
+        NeutralCase{"04_bias_offset",
+                    {"bias.mode=gradient", "bias.units=0"},
+                    "CONSTANT_TERM",
+                    "bias.units=4"},
+        NeutralCase{"04_bias_offset",
+                    {"bias.mode=normal_offset", "bias.factor=0"},
+                    "NORMAL_OFFSET",
+                    "bias.factor=1"},
+        NeutralCase{"11_omni_cube", {"bias.normal=0"}, "NORMAL_OFFSET", "bias.normal=0.5"},
+        NeutralCase{"12_cascades", {"cascades.blend=0"}, "CASCADE_BLEND", "cascades.blend=0.2"},
+        NeutralCase{"12_cascades", {"cascades.count=1"}, "CASCADE_BLEND", "cascades.count=3"},
+        NeutralCase{"12_cascades", {}, "KEPT_CASCADES", ""},
+        NeutralCase{"12_cascades", {"cascades.update=2"}, "KEPT_CASCADES", ""},
+        NeutralCase{"12_cascades", {"bias.normal=0"}, "NORMAL_OFFSET", "bias.normal=1"},
+        NeutralCase{"13_filterable_maps", {}, "BLEEDING_REDUCTION", "vsm.bleeding=0.3"}),
+    [](const ::testing::TestParamInfo<NeutralCase>& test_case) {
+      std::string name = test_case.param.lesson.substr(0, 2) + "_" + test_case.param.feature;
+      for (const std::string& set : test_case.param.neutral) {
+        for (char ch : set) name += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+      }
+      return name;
+    });
+
 // Every lesson's view reaches its shader as the VIEW define the lesson's views name.
 TEST(Variants, TheViewIsTheVariantTheFrameShows) {
   auto runner = startLesson("03_shadow_map_basic", {"view=compare"}, 160, 120);

@@ -2,6 +2,7 @@
 // selected by #defines and compiled on first use.
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <glm/gtc/type_ptr.hpp>
 #include <regex>
@@ -235,7 +236,26 @@ void Program::use() const {
 namespace {
 std::vector<std::string> g_used;
 long long g_compiled = 0;
+
+// "1": every feature kept; "A,B": those named; empty: none.
+std::string& keptFeatures() {
+  static std::string kept = [] {
+    const char* value = std::getenv("SHADOWS_KEEP_NEUTRAL_CODE");
+    return std::string(value != nullptr ? value : "");
+  }();
+  return kept;
+}
 }  // namespace
+
+std::vector<std::string> feature(const std::string& name, bool working) {
+  const std::string& kept = keptFeatures();
+  const bool keep = kept == "1" || ("," + kept + ",").find("," + name + ",") != std::string::npos;
+  return define(name, working || keep ? 1 : 0);
+}
+
+void keepNeutralCode(bool keep) {
+  keptFeatures() = keep ? "1" : "";
+}
 
 const Program& ProgramVariants::get(std::initializer_list<std::vector<std::string>> parts) {
   std::vector<std::string> defines;

@@ -77,6 +77,15 @@ inline std::vector<std::string> define(const std::string& name, int value) {
   return {name + " " + std::to_string(value)};
 }
 
+// A feature's #if block, compiled only where its setting does work. At the setting's neutral
+// value (a blend of 0, a normal offset of 0) the code would change no pixel and still run for
+// every one: feature(name, working) leaves it out there. keepNeutralCode(true), or
+// SHADOWS_KEEP_NEUTRAL_CODE=1 in the environment (or =A,B: the features named), compiles the
+// code in anyway, so a test can see that leaving it out changes nothing and
+// scripts/neutral_code.sh can count what it saves.
+std::vector<std::string> feature(const std::string& name, bool working);
+void keepNeutralCode(bool keep);
+
 // One #define line "NAME vec2[](vec2(x, y), ...)": constants computed in C++ compiled into a
 // shader (`const vec2 k[N] = NAME;`). Each float is written so that it reads back as the same
 // float, so the shader computes with exactly the values the C++ (and its tests) has.
