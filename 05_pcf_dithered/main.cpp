@@ -96,9 +96,14 @@ class PcfDithered final : public Lesson {
       const bool linear = mode == pcf::Mode::Hw2x2 || linear_filter_.name() == "linear";
       const bool fetch = lookup_used_.lookup == pcf::Lookup::Fetch;
       (fetch ? fetch_ : linear ? linear_ : nearest_).bind(0);
-      const Program& e = eye_programs_.get(
-          {mode_.defines(), early_out_.defines(), kernelDefines(mode), lookupDefines(grid),
-           define("PCF_COUNT", counting), f.viewDefines(), define("SHADOW_OFF", map_.off())});
+      // At pcf.radius=0 every tap of a kernel reads the one texel, and where a tap answers 0 or
+      // 1 (nearest, or fetch) their average is that tap's answer: one lookup is compiled.
+      const bool kernel = mode == pcf::Mode::None || mode == pcf::Mode::Hw2x2 || radius > 0.0f ||
+                          (linear && !fetch);
+      const Program& e =
+          eye_programs_.get({mode_.defines(), early_out_.defines(), kernelDefines(mode),
+                             lookupDefines(grid), define("PCF_COUNT", counting), f.viewDefines(),
+                             define("SHADOW_OFF", map_.off()), feature("PCF_KERNEL", kernel)});
       e.set("uViewProjection", f.projection * f.view);
       e.set("uShadowMatrix", map_.textureMatrix());  // B * P_light * V_light
       e.set("uShadowMap", 0);

@@ -40,7 +40,12 @@ float shadowTerm(vec3 n, vec3 toLight) {
   if (c.w <= 0.0) return 1.0;  // behind a spot light: outside its frustum
   vec3 p = c.xyz / c.w;
   p.z = min(p.z, 1.0);  // beyond the far plane: every depth format clamps B to 1
+#if PCF_KERNEL
   float shade = percentageCloser(p, uRadius);
+#else
+  // pcf.radius=0 with taps of 0 or 1: each tap reads this texel, their average its answer.
+  float shade = tap(p, vec2(0.0));
+#endif
 #if PCF_COUNT
   atomicAdd(taps, uint(gTaps));
   atomicAdd(filtered, 1u);

@@ -129,14 +129,16 @@ class FilterableMaps final : public Lesson {
     (linear_filter_.name() == "linear" ? linear_ : compare_).bind(0);
     if (!pcf) moments_[kBlurred].bind(1);
     const std::vector<glm::vec2> unit = pcf::unitTapOffsets(pcf::Mode::Grid, taps_() * taps_());
-    const Program& e =
-        eye_programs_.get({method_defines,
-                           choiceDefines("pcf.mode", pcf::kModeNames, "grid"),
-                           {defineVec2Array("PCF_UNIT_TAPS", unit),
-                            "PCF_TAP_COUNT " + std::to_string(unit.size()), "PCF_EARLY_OUT 0"},
-                           f.viewDefines(),
-                           define("SHADOW_OFF", map_.off()),
-                           feature("BLEEDING_REDUCTION", bleeding_() > 0.0f)});
+    const Program& e = eye_programs_.get(
+        {method_defines,
+         choiceDefines("pcf.mode", pcf::kModeNames, "grid"),
+         {defineVec2Array("PCF_UNIT_TAPS", unit), "PCF_TAP_COUNT " + std::to_string(unit.size()),
+          "PCF_EARLY_OUT 0"},
+         f.viewDefines(),
+         define("SHADOW_OFF", map_.off()),
+         feature("BLEEDING_REDUCTION", bleeding_() > 0.0f),
+         // filter.radius=0 with nearest compares: every tap the same 0 or 1
+         feature("PCF_KERNEL", !pcf || radius_() > 0.0f || linear_filter_.name() == "linear")});
     e.set("uViewProjection", f.projection * f.view);
     e.set("uShadowMatrix", map_.textureMatrix());
     e.set("uShadowMap", 0);

@@ -44,7 +44,11 @@ float shadowTerm(vec3 n, vec3 toLight) {
   vec3 p = c.xyz / c.w;
 #if FILTER_METHOD == FILTER_METHOD_PCF
   p.z = min(p.z, 1.0);  // beyond the far plane: every depth format clamps B to 1
+#if PCF_KERNEL
   return percentageCloser(p, uRadius);
+#else
+  return tap(p, vec2(0.0));  // filter.radius=0, nearest: every tap this one's 0 or 1
+#endif
 #else
   if (outsideTexture(p.xy, vec2(textureSize(uMoments, 0)))) return 1.0;  // the border: lit
   vec4 m = texture(uMoments, p.xy);

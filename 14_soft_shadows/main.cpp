@@ -124,7 +124,10 @@ class SoftShadows final : public Lesson {
            skip_umbra_.defines(),
            define("PCSS_COUNT", counting),
            f.viewDefines(),
-           define("SHADOW_OFF", map_.off())});
+           define("SHADOW_OFF", map_.off()),
+           // The fixed kernel at pcf.radius=0 with nearest compares: every tap the same 0 or 1.
+           feature("PCF_KERNEL", mode_() != SoftMode::Fixed || fixed_radius_() > 0.0f ||
+                                     filter_.name() == "linear")});
       e.set("uViewProjection", f.projection * f.view);
       e.set("uShadowMatrix", map_.textureMatrix());  // B * P_light * V_light
       e.set("uShadowMap", 0);

@@ -65,7 +65,11 @@ float softShadow(vec3 p) {
   return tap(p, vec2(0.0));  // lesson 04's one compare
 #elif PCSS_MODE == PCSS_MODE_FIXED
   gKernel = uFixedRadius;  // lesson 05: one width for every edge
+#if PCF_KERNEL
   return percentageCloser(p, uFixedRadius);
+#else
+  return tap(p, vec2(0.0));  // pcf.radius=0, nearest: every tap this one's 0 or 1
+#endif
 #else
   float receiver = lightDistance(p.z);
   // 1. The search region: the cone to the light's disk, cut where the casters begin.
