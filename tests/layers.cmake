@@ -7,7 +7,8 @@
 #   math    the seeds' formulas in plain GLM (no GL)           uses core
 #   truth   the ray-traced reference and the error metrics      uses core, math   (no GL)
 #   gl      the API, its flavours, programs, contexts, timers   uses core
-#   lesson  what a lesson's main.cpp sees (Lesson, Frame)       uses core, math, truth, gl
+#   lesson  what a lesson's main.cpp sees (Lesson, Frame)       uses core, math, gl, and of
+#                                                               truth only truth_types.hpp
 #   shadow  the techniques lessons share (maps, light views)    uses core, math, gl, lesson
 #   run     the runner: window, headless, panel, report, truth  uses all of them
 #   NN_*    a lesson                                            uses core, math, gl, lesson, shadow
@@ -47,6 +48,12 @@ function(check file layer)
       elseif(NOT folder IN_LIST allowed_${layer})
         message("${shown}: #include \"${included}\": ${layer} may not use ${folder}/ "
                 "(it may use: ${allowed_${layer}})")
+        math(EXPR crossings "${crossings} + 1")
+      elseif(layer STREQUAL "lesson" AND folder STREQUAL "truth" AND
+             NOT included STREQUAL "truth/truth_types.hpp")
+        # What a lesson sees may hand the truth its data, never reach its tracer.
+        message("${shown}: #include \"${included}\": lesson/ takes the truth's types only "
+                "(truth/truth_types.hpp), not the tracer")
         math(EXPR crossings "${crossings} + 1")
       endif()
     elseif(NOT EXISTS ${dir}/${included})

@@ -19,7 +19,7 @@
 #include "lesson/exercise.hpp"
 #include "math/shadow_math.hpp"
 #include "math/texel_density.hpp"
-#include "truth/truth.hpp"
+#include "truth/truth_types.hpp"
 
 namespace shadows {
 
