@@ -26,6 +26,10 @@ cases=(
   "12_cascades|NORMAL_OFFSET|bias.normal=0"
   "12_cascades|CASCADE_BLEND,NORMAL_OFFSET|cascades.blend=0 bias.normal=0"
   "13_filterable_maps|BLEEDING_REDUCTION|(the default)"
+  "05_pcf_dithered|PCF_KERNEL|pcf.radius=0"
+  "05_pcf_dithered|PCF_KERNEL|pcf.mode=grid pcf.taps=9 pcf.early_out=false pcf.radius=0"
+  "13_filterable_maps|PCF_KERNEL|filter.method=pcf filter.radius=0"
+  "14_soft_shadows|PCF_KERNEL|pcss.mode=fixed pcf.radius=0"
 )
 frame() {  # LESSON SETTINGS...: the frame's M instructions
   local lesson=$1
