@@ -55,11 +55,13 @@ float shadowTerm(vec3 n, vec3 toLight) {
 }
 
 void main() {
-  vec3 n = normalize(cross(dFdx(vWorld), dFdy(vWorld)));  // geometric, facing the eye
 #if SHADOW_OFF
   float shade = 1.0;  // shadow.off: the baseline, no lookup at all
 #else
-  float shade = shadowTerm(n, directionToLight(vWorld));
+  // The facing test asks only the sign of N.L: the geometric normal (facing the eye) and the
+  // way to the light need no normalize.
+  vec3 n = cross(dFdx(vWorld), dFdy(vWorld));
+  float shade = shadowTerm(n, uLightDirectional == 1 ? -uLightDir : uLightPos - vWorld);
 #endif
 #if VIEW == VIEW_SHADED
   {

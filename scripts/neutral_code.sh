@@ -8,11 +8,20 @@
 # byte for byte (tests/test_lesson_variants.cpp, NeutralCode, checks every view of these
 # cases). Prints a markdown table; about a minute a row on a 2-core machine.
 #
-# Usage: scripts/neutral_code.sh [--size WxH]   (default 800x600)
+# Usage: scripts/neutral_code.sh [--size WxH] [--lessons L1,L2]
+#   (default 800x600, every row; --lessons keeps the rows of those lessons, e.g. after a change
+#   to their shaders)
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 size=800x600
-[[ ${1:-} == --size ]] && size=$2
+only=
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    --size) size=$2; shift 2 ;;
+    --lessons) only=,$2,; shift 2 ;;
+    *) sed -n 11,13p "${BASH_SOURCE[0]}" >&2; exit 2 ;;
+  esac
+done
 # lesson | features | the neutral settings (the test's cases, and some together)
 cases=(
   "04_bias_offset|GRADIENT_TERM|bias.mode=gradient bias.factor=0"
@@ -43,6 +52,7 @@ echo "| lesson | left out at its neutral value | settings | compiled in (M) | le
 echo "|---|---|---|---|---|---|"
 for c in "${cases[@]}"; do
   IFS='|' read -r lesson feature settings <<<"$c"
+  [[ -z $only || $only == *,$lesson,* ]] || continue
   if [[ $settings == "(the default)" ]]; then args=("(the default)"); else read -ra args <<<"$settings"; fi
   echo "neutral_code: $lesson $settings" >&2
   kept=$(SHADOWS_KEEP_NEUTRAL_CODE=$feature frame "$lesson" "${args[@]}")
