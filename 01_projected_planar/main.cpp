@@ -31,8 +31,10 @@ class ProjectedPlanar final : public Lesson {
   std::vector<std::string> unusedSharedParams() const override {
     return {"light.fov", "light.extent", "light.near", "light.far"};
   }
-  std::vector<std::string> debugViews() const override {
-    return {"overdraw"};  // how many shadow triangles land on each pixel
+  static constexpr View kOverdraw{"overdraw"};
+  std::vector<View> debugViews() const override {
+    // how many shadow triangles land on each pixel
+    return {kOverdraw};
   }
 
   void declare(Params& p) override {
@@ -65,7 +67,7 @@ class ProjectedPlanar final : public Lesson {
   }
 
   void render(Frame& f) override {
-    const int mode = f.mode == "visibility" ? 1 : f.mode == "overdraw" ? 2 : 0;
+    const int mode = f.shows(views::kVisibility) ? 1 : f.shows(kOverdraw) ? 2 : 0;
     const bool projecting = placeReceiver(f);
 
     // 1. The scene, lit (slide 17: "render scene, full lighting"). The receiver comes last

@@ -65,7 +65,9 @@ class ProjectiveTexture final : public Lesson {
   std::vector<std::string> unusedSharedParams() const override {
     return {"light.near", "light.far"};
   }
-  std::vector<std::string> debugViews() const override { return {"texcoords", "slide"}; }
+  static constexpr View kTexcoords{"texcoords"};
+  static constexpr View kSlide{"slide"};
+  std::vector<View> debugViews() const override { return {kTexcoords, kSlide}; }
 
   void declare(Params& p) override {
     // Checked when set: a missing, broken or non-PNG file is bad input, named, before any frame.
@@ -101,13 +103,13 @@ class ProjectiveTexture final : public Lesson {
     const glm::vec3 axis = f.light.direction;
     const glm::vec4 projector_plane{axis, -glm::dot(axis, f.light.position)};
 
-    const float grey = f.mode == "visibility" ? 0.0f : 0.13f;  // visibility: 0, not counted
+    const float grey = f.shows(views::kVisibility) ? 0.0f : 0.13f;  // visibility: 0, not counted
     f.clearTarget(glm::vec3(grey, grey, grey * 1.2f));
-    if (f.mode == "slide") {
+    if (f.shows(kSlide)) {
       f.drawImageInset(slide_, /*fullscreen=*/true);
       return;
     }
-    const int mode = f.mode == "visibility" ? 1 : f.mode == "texcoords" ? 2 : 0;
+    const int mode = f.shows(views::kVisibility) ? 1 : f.shows(kTexcoords) ? 2 : 0;
     slide_.bind(0);
     program_.set("uSlide", 0);
     program_.set("uViewProjection", f.projection * f.view);

@@ -22,11 +22,15 @@ class ShadowMapBasic final : public Lesson {
   std::string seeds() const override {
     return "seed 000: The Shadow Mapping Concept .. Shadow Map Operation; seed 001: Shadow Maps";
   }
-  std::vector<std::string> debugViews() const override {
+  static constexpr View kLightView{"light_view"};
+  static constexpr View kProjectedDepth{"projected_depth"};
+  static constexpr View kLightDistance{"light_distance"};
+  static constexpr View kCompare{"compare"};
+  std::vector<View> debugViews() const override {
     // Kilgard's visualizations (seed 000, "Visualizing the Shadow Mapping Technique").
-    return {
-        "light_view", "light_depth", "projected_depth", "light_distance",
-        "compare",    "aliasing"};  // aliasing: the runner's texels per pixel (texel_density.hpp)
+    // aliasing: the runner's texels per pixel (texel_density.hpp)
+    return {kLightView,     views::kLightDepth, kProjectedDepth,
+            kLightDistance, kCompare,           views::kAliasing};
   }
 
   void declare(Params& p) override {
@@ -59,7 +63,7 @@ class ShadowMapBasic final : public Lesson {
     map_.texture().bind(0);  // as sampler2DShadow
     map_.texture().bind(1);  // the same texture read raw, for the debug views
     raw_sampler_.bind(1);
-    const bool from_light = f.mode == "light_view";
+    const bool from_light = f.shows(kLightView);
     const Program& e = eye_programs_.get({f.viewDefines(), define("SHADOW_OFF", map_.off())});
     e.set("uViewProjection", from_light ? map_.lightViewProjection() : f.projection * f.view);
     e.set("uShadowMatrix", biasMatrix() * map_.lightProjection() * map_.lightView());
@@ -72,7 +76,7 @@ class ShadowMapBasic final : public Lesson {
     if (from_light) e.set("uEye", f.light.position);
     f.drawObjects(e, Objects::All);
     Sampler::unbind(1);
-    if (f.mode != "visibility") map_.drawInset(f);
+    if (!f.shows(views::kVisibility)) map_.drawInset(f);
   }
 
   // instructor/SOLUTIONS.md has the intended solutions (kept off the students' site).

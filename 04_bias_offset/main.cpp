@@ -42,8 +42,9 @@ class BiasOffset final : public Lesson {
     return "seed 000: glPolygonOffset .. Selecting the Depth Map Bias; 001: Combating Shadow "
            "Acne; 002: Depth Biasing; 003: slides 57-70";
   }
-  std::vector<std::string> debugViews() const override {
-    return {"bias_margin", "light_depth", "aliasing"};
+  static constexpr View kBiasMargin{"bias_margin"};
+  std::vector<View> debugViews() const override {
+    return {kBiasMargin, views::kLightDepth, views::kAliasing};
   }
 
   void declare(Params& p) override {
@@ -127,7 +128,7 @@ class BiasOffset final : public Lesson {
     f.setLightingUniforms(e, dimming_());
     f.drawObjects(e, Objects::All);
     Sampler::unbind(1);
-    if (f.mode != "visibility") map_.drawInset(f);
+    if (!f.shows(views::kVisibility)) map_.drawInset(f);
   }
 
   void panel(Frame& f) override {

@@ -34,8 +34,9 @@ class PcfDithered final : public Lesson {
     return "seed 000: Hardware Shadow Map Filtering .. Advice for Shadowed Illumination Model "
            "(2); 001: Soft Shadows .. PCF with Dithering; 003: slide 71";
   }
-  std::vector<std::string> debugViews() const override {
-    return {"taps", "light_depth", "aliasing"};
+  static constexpr View kTaps{"taps"};
+  std::vector<View> debugViews() const override {
+    return {kTaps, views::kLightDepth, views::kAliasing};
   }
 
   void declare(Params& p) override {
@@ -125,7 +126,7 @@ class PcfDithered final : public Lesson {
     } else if (count_() && f.measure.enabled()) {
       for (const char* name : names) f.measure.count(name, std::optional<long long>());
     }
-    if (f.mode != "visibility") map_.drawInset(f);
+    if (!f.shows(views::kVisibility)) map_.drawInset(f);
   }
 
   void panel(Frame& f) override {

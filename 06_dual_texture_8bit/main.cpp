@@ -25,8 +25,11 @@ class DualTexture8bit final : public Lesson {
     return "seed 000: An Alternative to Dedicated Shadow Mapping Hardware .. Improving Depth "
            "Map Precision";
   }
-  std::vector<std::string> debugViews() const override {
-    return {"map", "ramp", "difference", "aliasing"};
+  static constexpr View kMap{"map"};
+  static constexpr View kRamp{"ramp"};
+  static constexpr View kDifference{"difference"};
+  std::vector<View> debugViews() const override {
+    return {kMap, kRamp, kDifference, views::kAliasing};
   }
 
   void declare(Params& p) override {
@@ -50,20 +53,20 @@ class DualTexture8bit final : public Lesson {
 
   void render(Frame& f) override {
     if (map_.prepare(f)) map_.render(f);
-    if (f.mode == "map") {  // the 8-bit map itself, as the light sees it
+    if (f.shows(kMap)) {  // the 8-bit map itself, as the light sees it
       f.clearTarget(glm::vec3(0.0f));
       map_.drawInset(f, /*fullscreen=*/true);
       return;
     }
     // Black where nothing is drawn: the visibility view (0 is shadowed) and the lit passes
     // shown alone (pass.dimmed off), whose shadows would otherwise be holes of sky.
-    f.clearTarget(f.mode == "visibility" || !dimmed_() ? glm::vec3(0.0f) : Frame::kSky);
-    if (f.mode == "ramp" || f.mode == "difference") {  // one value per pixel, no test
+    f.clearTarget(f.shows(views::kVisibility) || !dimmed_() ? glm::vec3(0.0f) : Frame::kSky);
+    if (f.shows(kRamp) || f.shows(kDifference)) {  // one value per pixel, no test
       f.drawObjects(pass(f, 0), Objects::All);
     } else {
       drawPasses(f);
     }
-    if (f.mode != "visibility") map_.drawInset(f);
+    if (!f.shows(views::kVisibility)) map_.drawInset(f);
   }
 
   void panel(Frame&) override {

@@ -24,8 +24,11 @@ class MultiDigit16bit final : public Lesson {
   std::string seeds() const override {
     return "seed 000: Improving Depth Map Precision .. GeForce/Quadro Precision Extension";
   }
-  std::vector<std::string> debugViews() const override {
-    return {"big_digit", "little_digit", "passes", "aliasing"};
+  static constexpr View kBigDigit{"big_digit"};
+  static constexpr View kLittleDigit{"little_digit"};
+  static constexpr View kPasses{"passes"};
+  std::vector<View> debugViews() const override {
+    return {kBigDigit, kLittleDigit, kPasses, views::kAliasing};
   }
 
   void declare(Params& p) override {
@@ -54,18 +57,18 @@ class MultiDigit16bit final : public Lesson {
 
   void render(Frame& f) override {
     if (map_.prepare(f)) map_.render(f);
-    if (f.mode == "big_digit" || f.mode == "little_digit") {
+    if (f.shows(kBigDigit) || f.shows(kLittleDigit)) {
       f.clearTarget(glm::vec3(0.0f));
-      drawDigits(f, f.mode == "little_digit" ? 1 : 0, /*inset=*/false);
+      drawDigits(f, f.shows(kLittleDigit) ? 1 : 0, /*inset=*/false);
       return;
     }
     // Colour, depth, and the stencil to 0. Black where nothing is drawn: the visibility view (0 is
     // shadowed) and the lit passes shown alone (pass.dimmed off), whose shadows would otherwise be
     // holes of sky.
-    f.clearTarget(f.mode == "visibility" || !dimmed_() ? glm::vec3(0.0f) : Frame::kSky);
-    drawPasses(f, f.mode == "passes");
+    f.clearTarget(f.shows(views::kVisibility) || !dimmed_() ? glm::vec3(0.0f) : Frame::kSky);
+    drawPasses(f, f.shows(kPasses));
     // The inset: the little digit, "here is where the information is".
-    if (f.mode != "visibility" && inset_() && !map_.light().off()) {
+    if (!f.shows(views::kVisibility) && inset_() && !map_.light().off()) {
       drawDigits(f, 1, /*inset=*/true);
     }
   }

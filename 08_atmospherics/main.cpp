@@ -25,8 +25,10 @@ class Atmospherics final : public Lesson {
     return "seed 000: Combine with Projective Texturing for Spotlight Shadows; Combining "
            "Shadows with Atmospherics";
   }
-  std::vector<std::string> debugViews() const override {
-    return {"air", "surfaces", "spot", "light_depth", "aliasing"};
+  static constexpr View kSurfaces{"surfaces"};
+  static constexpr View kSpot{"spot"};
+  std::vector<View> debugViews() const override {
+    return {views::kAir, kSurfaces, kSpot, views::kLightDepth, views::kAliasing};
   }
   std::vector<std::string> scenes() const override {
     std::vector<std::string> all = {"room"};
@@ -95,8 +97,9 @@ class Atmospherics final : public Lesson {
     // 2 and 3. The surfaces, lit through the spot texture and the shadow map.
     {
       auto timing = f.measure.pass("surfaces", /*countPassed=*/true);
-      f.clearTarget(f.mode == "air" || f.mode == "visibility" ? glm::vec3(0.0f)
-                                                              : glm::vec3(0.02f, 0.02f, 0.03f));
+      f.clearTarget(f.shows(views::kAir) || f.shows(views::kVisibility)
+                        ? glm::vec3(0.0f)
+                        : glm::vec3(0.02f, 0.02f, 0.03f));
       bindLightTextures();
       const Program& room = room_.get({define("SHADOW_OFF", map_.off()), f.viewDefines()});
       room.set("uViewProjection", f.projection * f.view);
@@ -110,8 +113,8 @@ class Atmospherics final : public Lesson {
       f.drawObjects(room, Objects::All);
     }
     // 4. The air.
-    if (f.mode == "shaded" || f.mode == "air") drawSlices(f, cone);
-    if (f.mode == "shaded" || f.mode == "surfaces") map_.drawInset(f);
+    if (f.shows(views::kShaded) || f.shows(views::kAir)) drawSlices(f, cone);
+    if (f.shows(views::kShaded) || f.shows(kSurfaces)) map_.drawInset(f);
   }
 
   void panel(Frame&) override {

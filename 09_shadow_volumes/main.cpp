@@ -39,7 +39,10 @@ class ShadowVolumes final : public Lesson {
     return "seed 003: slides 22-50 (Shadow Volumes .. Shadow Volume Issues); seed 002: additive "
            "light masking";
   }
-  std::vector<std::string> debugViews() const override { return {"volumes", "count", "overview"}; }
+  static constexpr View kVolumes{"volumes"};
+  static constexpr View kCount{"count"};
+  static constexpr View kOverview{"overview"};
+  std::vector<View> debugViews() const override { return {kVolumes, kCount, kOverview}; }
   // A volume reaches to infinity: no light frustum, no map.
   std::vector<std::string> unusedSharedParams() const override {
     return {"light.fov", "light.extent", "light.near", "light.far"};
@@ -104,9 +107,9 @@ class ShadowVolumes final : public Lesson {
   void render(Frame& f) override {
     eyeProjection(f);
     // The truth's passes render other modes with view=overview: the ray stays for the report.
-    if (f.params.at("view").choice() != "overview") ray_.reset();
-    if (f.mode == "overview") return renderOverview(f);
-    const bool visibility = f.mode == "visibility";
+    if (f.params.at("view").choice() != kOverview.name()) ray_.reset();
+    if (f.shows(kOverview)) return renderOverview(f);
+    const bool visibility = f.shows(views::kVisibility);
     const bool modulative = combine_() == Combine::Modulative;
     // 1. The scene, dimmed (additive) or fully lit (modulative); the depth buffer.
     {
@@ -142,8 +145,8 @@ class ShadowVolumes final : public Lesson {
         drawScene(f, "light");
       }
     }
-    if (f.mode == "volumes") drawVolumesSeen(f);
-    if (f.mode == "count") drawCounts(f);
+    if (f.shows(kVolumes)) drawVolumesSeen(f);
+    if (f.shows(kCount)) drawCounts(f);
     PassState{}.apply();
   }
 

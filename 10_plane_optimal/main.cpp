@@ -32,9 +32,9 @@ class PlaneOptimal final : public Lesson {
     return "seed 002: Playing with Projection Matrices, Theory and Analysis; seed 003: Problem: "
            "Aliasing Artifacts";
   }
-  std::vector<std::string> debugViews() const override {
-    return {"aliasing", "light_view", "regions"};
-  }
+  static constexpr View kLightView{"light_view"};
+  static constexpr View kRegions{"regions"};
+  std::vector<View> debugViews() const override { return {views::kAliasing, kLightView, kRegions}; }
   std::vector<std::string> scenes() const override {
     return {"dueling", "strategy", "receding", "torus_pyramid", "grazing", "cubes"};
   }
@@ -86,7 +86,7 @@ class PlaneOptimal final : public Lesson {
     auto timing = f.measure.pass("eye", /*countPassed=*/true);
     f.clearTarget();
     map_.texture().bind(0);
-    const bool from_light = f.mode == "light_view";
+    const bool from_light = f.shows(kLightView);
     const Program& e =
         eye_programs_.get({f.viewDefines(), depth_defines, define("SHADOW_OFF", map_.off())});
     e.set("uViewProjection", from_light ? used_ : f.projection * f.view);
@@ -103,7 +103,7 @@ class PlaneOptimal final : public Lesson {
     f.setLightingUniforms(e, dimming_());
     if (from_light) e.set("uEye", f.light.position);
     f.drawObjects(e, Objects::All);
-    if (f.mode != "visibility") map_.drawInset(f);
+    if (!f.shows(views::kVisibility)) map_.drawInset(f);
   }
 
   // instructor/SOLUTIONS.md has the intended solutions (kept off the students' site).

@@ -37,8 +37,12 @@ class OmniCube final : public Lesson {
     return "seed 000: Not without its problems (six view frustums for omni-directional light); "
            "seed 003: Shadow volumes, advantages (omnidirectional lights)";
   }
-  std::vector<std::string> debugViews() const override {
-    return {"cube_cross", "face", "face_texels", "distance"};
+  static constexpr View kCubeCross{"cube_cross"};
+  static constexpr View kFace{"face"};
+  static constexpr View kFaceTexels{"face_texels"};
+  static constexpr View kDistance{"distance"};
+  std::vector<View> debugViews() const override {
+    return {kCubeCross, kFace, kFaceTexels, kDistance};
   }
   std::vector<std::string> scenes() const override {
     return {"bulb", "torus_pyramid", "dueling", "bulb_crowd", "bulb_throng"};
@@ -138,8 +142,8 @@ class OmniCube final : public Lesson {
     }
 
     auto timing = f.measure.pass("eye", /*countPassed=*/true);
-    f.clearTarget(f.mode == "cube_cross" ? glm::vec3(0.08f) : Frame::kSky);
-    if (f.mode == "cube_cross") return drawCross(f);
+    f.clearTarget(f.shows(kCubeCross) ? glm::vec3(0.08f) : Frame::kSky);
+    if (f.shows(kCubeCross)) return drawCross(f);
     cube_.bind(0);
     (filter_.name() == "linear" ? compare_linear_ : compare_nearest_).bind(0);
     cube_.bind(1);

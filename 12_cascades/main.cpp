@@ -59,9 +59,11 @@ class Cascades final : public Lesson {
     return "seed 003: Problem: Aliasing Artifacts (perspective aliasing); seed 002: allocate "
            "shadow map samples to regions that matter to the viewer";
   }
-  std::vector<std::string> debugViews() const override {
-    return {"cascades", "maps", "texel_grid"};
-  }
+  static constexpr View kCascades{"cascades"};
+  static constexpr View kMaps{"maps"};
+  static constexpr View kTexelGrid{"texel_grid"};
+  static constexpr View kShimmer{"shimmer"};  // readStates' per-pixel states, never offered
+  std::vector<View> debugViews() const override { return {kCascades, kMaps, kTexelGrid}; }
   std::vector<std::string> scenes() const override {
     return {"street", "street_low_sun", "receding", "torus_pyramid"};
   }
@@ -179,7 +181,7 @@ class Cascades final : public Lesson {
 
     auto timing = f.measure.pass("eye", /*countPassed=*/true);
     f.clearTarget();
-    if (f.mode == "maps" && !off_()) {
+    if (f.shows(kMaps) && !off_()) {
       f.drawDepthInset(atlas_.texture, 0.0f, 1.0f, /*perspective=*/false, /*fullscreen=*/true);
       return;
     }
@@ -460,8 +462,8 @@ class Cascades final : public Lesson {
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     std::vector<std::string> views = f.params.at("view").choices;
-    views.push_back("shimmer");  // a view of its own, never offered
-    const Program& e = eyeProgram(choiceDefines("view", views, "shimmer"), atlas, cascadeView);
+    views.push_back(kShimmer.str());  // a view of its own, never offered
+    const Program& e = eyeProgram(choiceDefines("view", views, kShimmer.str()), atlas, cascadeView);
     setEyeUniforms(e, f, atlas, cascadeView);
     e.set("uViewProjection", f.projection * f.view);
     f.drawObjects(e, Objects::All);

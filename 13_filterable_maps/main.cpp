@@ -39,7 +39,8 @@ class FilterableMaps final : public Lesson {
     return "seed 002: Variance shadow maps (two-parameter approximation, Deep Shadow Maps); "
            "003: further techniques; 000: Percentage Closer filtering";
   }
-  std::vector<std::string> debugViews() const override { return {"moments"}; }
+  static constexpr View kMoments{"moments"};
+  std::vector<View> debugViews() const override { return {kMoments}; }
   std::vector<std::string> scenes() const override {
     return {"stacked", "overlap", "torus_pyramid", "contact", "grazing", "dueling", "cubes"};
   }
@@ -114,7 +115,7 @@ class FilterableMaps final : public Lesson {
     }
     f.measure.count("blur_passes", pcf ? 0 : blur_passes_);
     blur_passes_ = 0;
-    if (f.mode == "moments") {
+    if (f.shows(kMoments)) {
       f.clearTarget();
       if (!pcf) {
         f.drawImageInset(moments_[kBlurred], /*fullscreen=*/true);
@@ -154,7 +155,7 @@ class FilterableMaps final : public Lesson {
     f.drawObjects(e, Objects::All);
     Sampler::unbind(0);
     // The map in a corner: PCF's depths, or the blurred moments a filterable map looks up.
-    if (f.mode != "visibility") {
+    if (!f.shows(views::kVisibility)) {
       if (pcf) {
         map_.drawInset(f);
       } else if (inset_()) {

@@ -49,8 +49,10 @@ class SoftShadows final : public Lesson {
     return "seed 003: Hard vs. soft shadows, Soft shadows (umbra, penumbra); seed 001: Soft "
            "Shadows; Fernando 2005, Percentage-Closer Soft Shadows";
   }
-  std::vector<std::string> debugViews() const override {
-    return {"blockers", "penumbra", "light_depth"};
+  static constexpr View kBlockers{"blockers"};
+  static constexpr View kPenumbra{"penumbra"};
+  std::vector<View> debugViews() const override {
+    return {kBlockers, kPenumbra, views::kLightDepth};
   }
   std::vector<std::string> scenes() const override {
     return {"contact", "overlap", "torus_pyramid", "grazing", "dueling", "cubes"};
@@ -152,7 +154,7 @@ class SoftShadows final : public Lesson {
     } else if (count_() && f.measure.enabled()) {
       for (const char* name : kCounterNames) f.measure.count(name, std::optional<long long>());
     }
-    if (f.mode != "visibility") map_.drawInset(f);
+    if (!f.shows(views::kVisibility)) map_.drawInset(f);
   }
 
   void panel(Frame& f) override {

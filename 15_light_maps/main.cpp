@@ -38,8 +38,11 @@ class LightMaps final : public Lesson {
     return "seed 003: Static shadows (light maps: a ray from each texel to each light, area "
            "lights sampled); seed 000: Common Real-time Shadow Techniques (light maps)";
   }
-  std::vector<std::string> debugViews() const override {
-    return {"atlas", "texel_grid", "noise", "light_depth"};
+  static constexpr View kAtlas{"atlas"};
+  static constexpr View kTexelGrid{"texel_grid"};
+  static constexpr View kNoise{"noise"};
+  std::vector<View> debugViews() const override {
+    return {kAtlas, kTexelGrid, kNoise, views::kLightDepth};
   }
   std::vector<std::string> scenes() const override {
     return {"torus_pyramid", "contact", "overlap", "grazing", "cubes"};
@@ -143,9 +146,10 @@ class LightMaps final : public Lesson {
 
     // Lesson 03's pass 1, where a mode reads a map: every caster, or only the moving one (the
     // baked mode draws none, but shows lesson 03's in its light_depth view).
-    const MapHolds needed = mode_() == Mode::Hybrid                           ? MapHolds::Moving
-                            : mode_() == Mode::Map || f.mode == "light_depth" ? MapHolds::All
-                                                                              : MapHolds::Nothing;
+    const MapHolds needed = mode_() == Mode::Hybrid ? MapHolds::Moving
+                            : mode_() == Mode::Map || f.shows(views::kLightDepth)
+                                ? MapHolds::All
+                                : MapHolds::Nothing;
     const bool stale = map_.prepare(f);
     // The runner's texels per pixel (and its aliasing view) are of lesson 03's map: of no
     // meaning where no pixel reads it.
@@ -164,7 +168,7 @@ class LightMaps final : public Lesson {
       f.measure.count("shadow_map_renders", -1LL);  // prepare counted a render none needed
     }
     if (map_.drawDepthView(f)) return;
-    if (f.mode == "atlas") {  // the light map itself, every chart in its place
+    if (f.shows(kAtlas)) {  // the light map itself, every chart in its place
       f.clearTarget(glm::vec3(0.0f));
       if (light_map_.id() != 0) f.drawImageInset(light_map_, /*fullscreen=*/true);
       return;
@@ -190,7 +194,7 @@ class LightMaps final : public Lesson {
     e.set("uSamples", static_cast<float>(std::max(raysPerTexel(), 1)));
     f.setLightingUniforms(e, dimming_());
     f.drawObjects(e, Objects::All);
-    if (f.mode != "visibility" && mode_() != Mode::Baked) map_.drawInset(f);
+    if (!f.shows(views::kVisibility) && mode_() != Mode::Baked) map_.drawInset(f);
   }
 
   void panel(Frame& f) override {

@@ -17,6 +17,7 @@
 #include "gl/measure.hpp"
 #include "gl/program.hpp"
 #include "lesson/exercise.hpp"
+#include "lesson/view.hpp"
 #include "math/shadow_math.hpp"
 #include "math/texel_density.hpp"
 #include "truth/truth_types.hpp"
@@ -114,7 +115,8 @@ struct Frame {
   glm::vec3 eye{0.0f};
   int width = 0, height = 0;
   GLuint target = 0;
-  std::string mode;  // the view to render: "shaded", "visibility" or a lesson debug view
+  View shown = views::kShaded;  // the view to render: shaded, visibility or a debug view
+  bool shows(View v) const { return shown == v; }
 
   // Outputs the runner uses: the light frustum the shadow term is valid in (pixels
   // outside it are not counted against the truth).
@@ -195,11 +197,12 @@ class Lesson {
   virtual ~Lesson() = default;
   virtual std::string title() const = 0;
   virtual std::string seeds() const = 0;  // which seed slides it follows, one line
-  // Debug views beyond shaded and visibility (the runner adds truth and error).
-  virtual std::vector<std::string> debugViews() const { return {}; }
+  // Debug views beyond shaded and visibility (the runner adds truth and error), each a constant
+  // the lesson declares (view.hpp) and its render() compares frame.shows(kX) against.
+  virtual std::vector<View> debugViews() const { return {}; }
   virtual void declare(Params& params) = 0;  // lesson parameters
   virtual void init() = 0;                   // GL resources (context is current)
-  virtual void render(Frame& frame) = 0;     // draw frame.mode into frame.target
+  virtual void render(Frame& frame) = 0;     // draw frame.shown into frame.target
   virtual void panel(Frame&) {}              // extra ImGui lines under the sliders
   virtual void report(JsonWriter&) const {}  // extra report fields (what the lesson derived)
   // Report fields measured per pixel by the runner's texel pass.

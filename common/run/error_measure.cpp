@@ -29,17 +29,17 @@
 namespace shadows {
 
 std::vector<float> Runner::renderVisibility() {
-  return renderRed("visibility");
+  return renderRed(views::kVisibility);
 }
 
-std::vector<float> Runner::renderRed(const std::string& mode) {
+std::vector<float> Runner::renderRed(View view) {
   const int w = options_.width, h = options_.height;
   gpu_->ensureFloatTargets(w, h);
   const GLuint fbo = gpu_->float_target->id();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glClearColor(0, 0, 0, 0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  renderInto(fbo, w, h, mode, false, false);
+  renderInto(fbo, w, h, view, false, false);
   std::vector<glm::vec4> rgba(static_cast<size_t>(w) * h);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
@@ -85,7 +85,7 @@ TruthInputs ErrorMeasure::gatherInputs() {
   const GLuint fbo = r_.gpu_->float_target->id();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  r_.renderInto(fbo, w, h, "shaded", false, false);
+  r_.renderInto(fbo, w, h, views::kShaded, false, false);
   in.shaded.resize(n);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
@@ -150,7 +150,7 @@ TruthInputs ErrorMeasure::gatherInputs() {
     air.eye = r_.params_.at("camera.pos").v();
     air.inverse_view_projection = glm::inverse(r_.cameraProjection(w, h) * r_.cameraView());
     job.air = std::move(air);
-    in.air_rendered = r_.renderRed("air");
+    in.air_rendered = r_.renderRed(views::kAir);
   }
   r_.measure_->setEnabled(was_enabled);
   return in;

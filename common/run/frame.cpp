@@ -9,9 +9,10 @@ namespace shadows {
 
 std::vector<std::string> Frame::viewDefines() const {
   std::vector<std::string> views = params.at("view").choices;
-  // Views the runner renders for itself ("air") are not offered as choices.
-  if (std::find(views.begin(), views.end(), mode) == views.end()) views.push_back(mode);
-  return choiceDefines("view", views, mode);
+  // Views the runner renders for itself (air, texels) are not offered as choices.
+  const std::string name = shown.str();
+  if (std::find(views.begin(), views.end(), name) == views.end()) views.push_back(name);
+  return choiceDefines("view", views, name);
 }
 
 void Frame::bindTarget() const {

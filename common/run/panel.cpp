@@ -244,7 +244,7 @@ void Runner::drawPanel(Frame& frame) {
                        texels->min_axis.median, texels->undersampled_pct,
                        texels_.current() ? "" : " (stale)");
   }
-  if (params_.at("view").choice() == "aliasing") TexelPass::drawLegend();
+  if (currentView() == views::kAliasing) TexelPass::drawLegend();
   if (const double overhead = baseline_.overhead(); overhead > 0.0) {
     ImGui::Text("cost: %.2fx the frame without shadow", overhead);
   }

@@ -50,16 +50,25 @@ std::vector<std::string> registeredLessons() {
 
 // ---------------------------------------------------------------- Runner
 
+View Runner::currentView() const {
+  const std::string& name = params_.at("view").choice();
+  for (const View& v : views_)
+    if (v.name() == name) return v;
+  return views::kShaded;  // unreachable: the choices are views_' names
+}
+
 Runner::Runner(const std::string& lessonName, std::unique_ptr<Lesson> lesson, RunOptions options)
     : name_(lessonName), lesson_(std::move(lesson)), options_(std::move(options)) {
   const std::vector<std::string> scenes = lesson_->scenes();
   params_.addChoice("scene", scenes, scenes.front(),
                     "scene preset (sets light and camera defaults)", kDirtyScene | kDirtyShadowMap);
-  std::vector<std::string> views = {"shaded", "visibility"};
-  for (const auto& v : lesson_->debugViews()) views.push_back(v);
-  views.push_back("truth");
-  views.push_back("error");
-  params_.addChoice("view", views, "shaded",
+  views_ = {views::kShaded, views::kVisibility};
+  for (const View& v : lesson_->debugViews()) views_.push_back(v);
+  views_.push_back(views::kTruth);
+  views_.push_back(views::kError);
+  std::vector<std::string> names;
+  for (const View& v : views_) names.push_back(v.str());
+  params_.addChoice("view", names, names.front(),
                     "what to show: shaded, the shadow term alone, debug views, the ray-traced "
                     "truth, or the error against it");
   lesson_->declare(params_);
@@ -270,11 +279,11 @@ void Runner::renderFrame(bool timed) {
   // In a window options_ holds the picture's size: the framebuffer less the panel's column.
   const int w = options_.width, h = options_.height;
   const bool panel = gpu_->imgui && (window_.is_open || options_.panel);
-  renderInto(target, w, h, params_.at("view").choice(), timed, panel);
+  renderInto(target, w, h, currentView(), timed, panel);
   GlErrorLog::poll();
 }
 
-void Runner::renderInto(GLuint target, int width, int height, const std::string& mode, bool timed,
+void Runner::renderInto(GLuint target, int width, int height, View view, bool timed,
                         bool withPanel) {
   measure_->setEnabled(timed);
   if (params_.consume(kDirtyScene)) loadScene();
@@ -292,7 +301,7 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
   frame.width = width;
   frame.height = height;
   frame.target = target;
-  frame.mode = mode;
+  frame.shown = view;
   frame.input_moving = input_moving_;
 
   // In a window the panel is drawn anew only when it may have changed (input, or every
@@ -322,13 +331,13 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
     // A widget may have changed the scene, the light, the camera or the view this frame.
     if (params_.consume(kDirtyScene)) loadScene();
     readParams();
-    frame.mode = params_.at("view").choice();
+    frame.shown = currentView();
   }
 
   measure_->beginFrame();
   frame.bindTarget();
   resetGlState();  // every lesson starts from the same GL state
-  if (frame.mode == "truth" || frame.mode == "error") {
+  if (frame.shows(views::kTruth) || frame.shows(views::kError)) {
     measure_->setEnabled(false);
 #ifndef __EMSCRIPTEN__
     measureError();
@@ -340,24 +349,24 @@ void Runner::renderInto(GLuint target, int width, int height, const std::string&
 #endif
     measure_->setEnabled(timed);
     const Image& shown =
-        frame.mode == "truth" ? errors_.truth().truthImage() : errors_.truth().errorImage();
+        frame.shows(views::kTruth) ? errors_.truth().truthImage() : errors_.truth().errorImage();
     if (!haveTruth() || shown.rgba.empty())
       frame.clearTarget(Frame::kNoTruthColor);  // a plain picture; the panel says why
     showImage(frame, shown);
   } else {
     // The texel views are the runner's, drawn over the lesson's shaded frame, whose map
     // they measure: `aliasing` (offered by map lessons) and `texels` (texels_.measure()).
-    const bool texels = frame.mode == "aliasing" || frame.mode == "texels";
-    const std::string texel_mode = frame.mode;
-    if (texels) frame.mode = "shaded";
+    const bool texels = frame.shows(views::kAliasing) || frame.shows(views::kTexels);
+    const View texel_view = frame.shown;
+    if (texels) frame.shown = views::kShaded;
     ProgramVariants::takeUsed();  // only this frame's
     lesson_->render(frame);
     measure_->variants(ProgramVariants::takeUsed());
     told_ = {frame.light_view_projection, frame.light_reach, frame.truth_area_radius, frame.medium,
              frame.shadow_sampling};
     if (texels) {
-      frame.mode = texel_mode;
-      texels_.draw(frame, texel_mode == "aliasing");
+      frame.shown = texel_view;
+      texels_.draw(frame, texel_view == views::kAliasing);
     }
   }
   if (withPanel && !window_.is_open) {

@@ -91,8 +91,10 @@ class Runner final {
   // time); returns the line said on stderr and under the panel's button.
   std::string screenshot();
   std::vector<float> renderVisibility();
-  // Renders `mode` into the float target and returns its red channel (visibility, air).
-  std::vector<float> renderRed(const std::string& mode);
+  // Renders `view` into the float target and returns its red channel (visibility, air).
+  std::vector<float> renderRed(View view);
+  // The view the `view` parameter chooses, as the lesson declared it.
+  View currentView() const;
 
   Params& params() { return params_; }
   Measure& measure() { return *measure_; }
@@ -133,8 +135,7 @@ class Runner final {
   // The object a point light sits on (within 1e-5 of the scene's radius), or "": the report's
   // light_on_surface and the panel's warning.
   std::string lightOnSurface() const;
-  void renderInto(GLuint target, int width, int height, const std::string& mode, bool timed,
-                  bool withPanel);
+  void renderInto(GLuint target, int width, int height, View view, bool timed, bool withPanel);
   void drawPanel(Frame& frame);
   // The chosen exercise: its goal, the sliders it lets the student move, each figure now and
   // the verdict, Save settings, the hint; in the panel's column, or around the picture
@@ -148,6 +149,7 @@ class Runner final {
   std::string name_;
   bool input_moving_ = false;
   std::unique_ptr<Lesson> lesson_;
+  std::vector<View> views_;  // the `view` parameter's choices, in its order
   RunOptions options_;
   Params params_;
   std::unique_ptr<Measure> measure_;

@@ -14,8 +14,8 @@ namespace shadows {
 void BaselineFrames::render() {
   Runner& r = r_;
   Param* off = r.params_.find("shadow.off");
-  const std::string view = r.params_.at("view").choice();
-  if (off == nullptr || off->b() || view == "truth" || view == "error") return;
+  const View view = r.currentView();
+  if (off == nullptr || off->b() || view == views::kTruth || view == views::kError) return;
   const int w = r.options_.width, h = r.options_.height;  // the picture's, as renderFrame's
   r.gpu_->ensureTargets(w, h);
   // What the lesson's frame told the runner, and what it has still to do (a dirty map must
@@ -66,7 +66,7 @@ const std::vector<TexelPixel>* TexelPass::measure() {
     const GLuint fbo = r.gpu_->float_target->id();
     if (!measure_) measure_ = std::make_unique<Measure>();
     std::swap(r.measure_, measure_);
-    r.renderInto(fbo, w, h, "texels", /*timed=*/true, false);
+    r.renderInto(fbo, w, h, views::kTexels, /*timed=*/true, false);
     std::swap(r.measure_, measure_);
     pixels_.clear();
     stats_.reset();

@@ -213,7 +213,7 @@ bool RunnerWindow::frame() {
       if (frames_left == 1 && !tracing) r_.gpu_->panel_input = true;
       // The panel's "shadow: N x the frame without it": one frame in 32 is rendered again,
       // off-screen, with shadow.off.
-      r_.renderInto(0, w, ph, r_.params_.at("view").choice(), true, !r_.options_.hide_panel);
+      r_.renderInto(0, w, ph, r_.currentView(), true, !r_.options_.hide_panel);
       // After the frame, so the panel's numbers (drawn first thing in a frame) are the
       // lesson's, not the baseline's.
 #ifndef __EMSCRIPTEN__  // a page cannot time it (costSummary)

@@ -74,7 +74,7 @@ const Program& ShadowMap::depthOnly() {
 }
 
 bool ShadowMap::drawDepthView(const Frame& frame) const {
-  if (frame.mode != "light_depth") return false;
+  if (!frame.shows(views::kLightDepth)) return false;
   frame.clearTarget(glm::vec3(0.0f));
   drawInset(frame, /*fullscreen=*/true);
   return true;

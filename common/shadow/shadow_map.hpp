@@ -38,8 +38,8 @@ class ShadowMap {
   // Pass 1 with one object alone (lesson 15's hybrid: the caster that moves, while the bake
   // holds the others), timed as "shadow", with renderCasters' own program.
   void renderObject(Frame& frame, size_t index, const PassState& state = {});
-  // Kilgard's "depth buffer from the light's point of view": when frame.mode is
-  // "light_depth", draws the map over the whole target and returns true.
+  // Kilgard's "depth buffer from the light's point of view": when the frame shows
+  // views::kLightDepth, draws the map over the whole target and returns true.
   bool drawDepthView(const Frame& frame) const;
   // The depth map inset in a corner (or over the whole target), when `inset` is on.
   void drawInset(const Frame& frame, bool fullscreen = false) const;
