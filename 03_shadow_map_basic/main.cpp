@@ -54,7 +54,8 @@ class ShadowMapBasic final : public Lesson {
     // Pass 1: depth from the light, only when something it depends on changed (a static
     // frame renders no map). Only casters inside the light frustum are drawn into it.
     if (map_.prepare(f)) map_.renderCasters(f);  // P_light * V_light * M * p
-    if (map_.drawDepthView(f)) return;           // Kilgard's second view: the depth map itself
+    map_.sampledBy(f);  // the eye reads this map: the truth counts inside its frustum
+    if (map_.drawDepthView(f)) return;  // Kilgard's second view: the depth map itself
 
     // Pass 2 from the eye (or, for Kilgard's first view, from the light): each fragment
     // gets (s, t, r, q) = B * P_light * V_light * M * p and textureProj compares r/q.

@@ -101,6 +101,7 @@ class BiasOffset final : public Lesson {
       depth_program_.set("uClipOffset", mode == Bias::ClipTranslate ? clipOffset(units) : 0.0f);
       map_.renderCasters(f, depth_program_, state);
     }
+    map_.sampledBy(f);  // the eye reads this map: the truth counts inside its frustum
     if (map_.drawDepthView(f)) return;
 
     auto timing = f.measure.pass("eye", /*countPassed=*/true);

@@ -74,6 +74,7 @@ class PcfDithered final : public Lesson {
   void render(Frame& f) override {
     // Lesson 04's default bias: back faces into the map, plus glPolygonOffset.
     if (map_.prepare(f)) map_.renderCasters(f, ShadowMap::backFacesBias(factor_(), units_()));
+    map_.sampledBy(f);  // the eye reads this map: the truth counts inside its frustum
     const pcf::Mode mode = mode_();
     const float radius = radius_();
     const int grid = pcf::gridSide(taps_());

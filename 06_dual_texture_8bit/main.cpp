@@ -53,6 +53,7 @@ class DualTexture8bit final : public Lesson {
 
   void render(Frame& f) override {
     if (map_.prepare(f)) map_.render(f);
+    map_.sampledBy(f);    // the eye reads this map: the truth counts inside its frustum
     if (f.shows(kMap)) {  // the 8-bit map itself, as the light sees it
       f.clearTarget(glm::vec3(0.0f));
       map_.drawInset(f, /*fullscreen=*/true);

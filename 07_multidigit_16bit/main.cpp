@@ -57,6 +57,7 @@ class MultiDigit16bit final : public Lesson {
 
   void render(Frame& f) override {
     if (map_.prepare(f)) map_.render(f);
+    map_.sampledBy(f);  // the eye reads this map: the truth counts inside its frustum
     if (f.shows(kBigDigit) || f.shows(kLittleDigit)) {
       f.clearTarget(glm::vec3(0.0f));
       drawDigits(f, f.shows(kLittleDigit) ? 1 : 0, /*inset=*/false);

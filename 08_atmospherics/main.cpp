@@ -87,6 +87,7 @@ class Atmospherics final : public Lesson {
     if (map_.prepare(f)) {
       map_.renderCasters(f, ShadowMap::backFacesBias(1.1f, 4.0f), Objects::Occluders);
     }
+    map_.sampledBy(f);  // the eye reads this map: the truth counts inside its frustum
     if (map_.drawDepthView(f)) return;
 
     const glm::mat4 cone = coneOfLight(f);

@@ -73,7 +73,8 @@ class PlaneOptimal final : public Lesson {
   void render(Frame& f) override {
     bool stale = map_.prepare(f);
     chooseProjection(f);
-    stale = map_.warp(f, used_) || stale;
+    stale = map_.warp(used_) || stale;
+    map_.sampledBy(f);  // through the chosen matrix; the truth counts in the light's frustum
     // Pass 1: the casters' back faces (lesson 04's default), through the chosen matrix.
     const std::vector<std::string> depth_defines = define("DEPTH_REPLACE", replace_() ? 1 : 0);
     if (stale && !map_.off()) {

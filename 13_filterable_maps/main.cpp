@@ -98,6 +98,7 @@ class FilterableMaps final : public Lesson {
     // 32-bit floats where they filter; else 16 bits, and the report says so.
     bits_used_ = bits_.name() == "16" || !caps().float_linear ? 16 : 32;
     const bool rendered = map_.prepare(f, kDirtyNothing);
+    map_.sampledBy(f);  // the eye reads this map: the truth counts inside its frustum
     kernel_texels_ = taps_() > 1 ? radius_() : 0.0f;  // a 1-tap grid has no width (05)
     match_ = matchAreaLight(f, map_, kernel_texels_);
     f.truth_area_radius = match_.radius;
@@ -284,6 +285,7 @@ class FilterableMaps final : public Lesson {
   // filtered map needs no bias: the variance and the exponent soften the compare).
   void renderMoments(Frame& f, const std::vector<std::string>& methodDefines) {
     auto timing = f.measure.pass("shadow");
+    f.measure.count("shadow_map_renders");
     Frame pass = f;
     pass.target = framebuffers_[kRaw]->id();
     pass.width = map_.width();

@@ -100,6 +100,7 @@ class SoftShadows final : public Lesson {
 
   void render(Frame& f) override {
     if (map_.prepare(f)) map_.renderCasters(f, ShadowMap::backFacesBias(factor_(), units_()));
+    map_.sampledBy(f);  // the eye reads this map: the truth counts inside its frustum
     // One light for every mode: a technique is scored against the shadow it imitates.
     f.truth_area_radius = light_radius_();
     if (map_.drawDepthView(f)) return;

@@ -151,9 +151,10 @@ class LightMaps final : public Lesson {
                                 ? MapHolds::All
                                 : MapHolds::Nothing;
     const bool stale = map_.prepare(f);
-    // The runner's texels per pixel (and its aliasing view) are of lesson 03's map: of no
-    // meaning where no pixel reads it.
-    if (mode_() == Mode::Baked) f.shadow_sampling.reset();
+    // Every mode is counted in lesson 03's light frustum; the runner's texels per pixel (and
+    // its aliasing view) are of its map, of no meaning where no pixel reads it.
+    f.light_view_projection = map_.lightViewProjection();
+    if (mode_() != Mode::Baked) f.shadow_sampling = map_.light().sampling();
     if (stale) map_holds_ = MapHolds::Nothing;
     if (needed != MapHolds::Nothing && needed != map_holds_) {
       const PassState bias = ShadowMap::backFacesBias(factor_(), units_());
@@ -162,10 +163,7 @@ class LightMaps final : public Lesson {
       } else {
         map_.renderCasters(f, bias);
       }
-      if (!stale) f.measure.count("shadow_map_renders");
       map_holds_ = needed;
-    } else if (stale) {
-      f.measure.count("shadow_map_renders", -1LL);  // prepare counted a render none needed
     }
     if (map_.drawDepthView(f)) return;
     if (f.shows(kAtlas)) {  // the light map itself, every chart in its place

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <thread>
 
@@ -123,6 +124,22 @@ TEST(Lesson15, ABakedFrameDrawsNoMapAndTheHybridsMapHoldsOneObject) {
   EXPECT_EQ(work("baked"), std::make_pair(0LL, -1LL));  // no map, no pass
   EXPECT_EQ(work("hybrid"), std::make_pair(1LL, 1LL));  // the ball alone
   EXPECT_EQ(work("map"), std::make_pair(1LL, 3LL));     // torus, pyramid, ball
+}
+
+TEST(Lesson15, EveryModeIsCountedInOneFrustumAndOnlyAMapsReaderHasItsTexelsPerPixel) {
+  // The lesson says what its eye reads (LightView writes nothing of the frame's): every mode
+  // is scored in lesson 03's light frustum, so the three count the same pixels, and the
+  // runner's texels per pixel are of the map, which the baked mode does not read.
+  std::map<std::string, long long> counted;
+  for (const std::string mode : {"map", "baked", "hybrid"}) {
+    auto runner = startLesson(kLesson, {"lightmap.mode=" + mode}, 160, 120);
+    runner->renderFrame();
+    counted[mode] = runner->measureError().metrics.counted_pixels;
+    EXPECT_EQ(testing::report(*runner).contains("texels_per_pixel"), mode != "baked") << mode;
+  }
+  EXPECT_GT(counted["map"], 0);
+  EXPECT_EQ(counted["baked"], counted["map"]);
+  EXPECT_EQ(counted["hybrid"], counted["map"]);
 }
 
 TEST(Lesson15, TheReportCountsTexelsRaysAndBytes) {

@@ -267,6 +267,7 @@ void DepthReadback::render(Frame& f) {
   const float factor = bias_factor_(), steps = bias_steps_();
   {
     auto timing = f.measure.pass("shadow");
+    f.measure.count("shadow_map_renders");
     light_target_->bind();
     glViewport(0, 0, size_.x, size_.y);
     PassState state;

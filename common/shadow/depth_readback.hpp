@@ -32,9 +32,12 @@ class DepthReadback {
   // The light's view and the map's storage for this frame; true when the map must be
   // rendered again (see LightView::update).
   bool prepare(Frame& frame);
-  // The light pass (pass "shadow": casters only, with the bias where bias.mode puts it),
-  // then the move into the lookup texture (pass "readback", counting readback_bytes).
+  // The light pass (pass "shadow": casters only, with the bias where bias.mode puts it,
+  // counted as shadow_map_renders), then the move into the lookup texture (pass "readback",
+  // counting readback_bytes).
   void render(Frame& frame);
+  // The eye passes read this map (LightView::sampledBy).
+  void sampledBy(Frame& frame) const { light_.sampledBy(frame); }
 
   // Binds Tex0 (the map) to unit 0, Tex1 (the ramp) to unit 1 (two digits: pass 2's 1D ramp
   // to unit 2), and sets what the eye shaders of 06/07 read: uMap, uRamp(Big), uMapIsDepth,

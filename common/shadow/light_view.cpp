@@ -52,15 +52,22 @@ bool LightView::update(Frame& f, glm::ivec2 size, bool recreated, std::uint32_t 
   projection_ = lightProjection(frustum_);
   view_ = f.light.view;
   warped_.reset();
-  f.light_view_projection = viewProjection();
-  if (!off_) f.shadow_sampling = ShadowSampling{textureMatrix(), size_};
-  f.measure.count("shadow_map_renders", stale ? 1 : 0);
+  f.measure.count("shadow_map_renders", 0);  // in every report of a map lesson, cached or not
   return stale;
 }
 
-bool LightView::warp(Frame& f, const glm::mat4& viewProjection) {
+std::optional<ShadowSampling> LightView::sampling() const {
+  if (off_) return std::nullopt;
+  return ShadowSampling{textureMatrix(), size_};
+}
+
+void LightView::sampledBy(Frame& f) const {
+  f.light_view_projection = projection_ * view_;  // the light's own frustum, warped or not (10)
+  f.shadow_sampling = sampling();
+}
+
+bool LightView::warp(const glm::mat4& viewProjection) {
   warped_ = viewProjection;
-  if (!off_) f.shadow_sampling = ShadowSampling{textureMatrix(), size_};
   const bool changed = last_warp_ != warped_;
   last_warp_ = warped_;
   return changed;

@@ -21,16 +21,22 @@ class LightView {
   glm::ivec2 mapSize() const { return {size_param_(), height_() > 0 ? height_() : size_param_()}; }
 
   // Computes this frame's frustum and matrices for a map of `size` texels, and says whether
-  // the map must be rendered (counted as shadow_map_renders): when the light, a caster or
-  // any `extraDirty` bit changed, the cache is off, or `recreated` (new storage).
+  // the map must be rendered: when the light, a caster or any `extraDirty` bit changed, the
+  // cache is off, or `recreated` (new storage). It writes nothing of the frame's but a
+  // shadow_map_renders of 0: the pass that renders the map counts itself.
   bool update(Frame& frame, glm::ivec2 size, bool recreated,
               std::uint32_t extraDirty = kDirtyNothing);
+  // What the lesson tells the frame when its eye pass reads this map: the light frustum the
+  // truth counts pixels in (Frame::light_view_projection) and how the map is sampled
+  // (Frame::shadow_sampling: texels per pixel, the aliasing view; none with shadow.off).
+  void sampledBy(Frame& frame) const;
+  std::optional<ShadowSampling> sampling() const;
 
   // Lesson 10: this frame's map through another world-to-clip matrix than the frustum's (a
   // focused or warped projection), set after update(). The frustum the truth counts in stays
   // the light's own. True when it differs from the matrix of the previous frame, so a map built
   // through it must be rendered again.
-  bool warp(Frame& frame, const glm::mat4& viewProjection);
+  bool warp(const glm::mat4& viewProjection);
 
   const LightFrustum& frustum() const { return frustum_; }
   const glm::mat4& projection() const { return projection_; }

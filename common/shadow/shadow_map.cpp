@@ -42,6 +42,7 @@ void ShadowMap::beginRender() const {
 void ShadowMap::renderCasters(Frame& f, const Program& depthProgram, const PassState& state,
                               Objects which) const {
   auto timing = f.measure.pass("shadow");
+  f.measure.count("shadow_map_renders");
   beginRender();
   state.apply();
   const glm::mat4 light_view_projection = lightViewProjection();
@@ -57,6 +58,7 @@ void ShadowMap::renderCasters(Frame& f, const PassState& state, Objects which) {
 void ShadowMap::renderObject(Frame& f, size_t index, const PassState& state) {
   const Program& program = depthOnly();
   auto timing = f.measure.pass("shadow");
+  f.measure.count("shadow_map_renders");
   beginRender();
   state.apply();
   program.use();

@@ -13,9 +13,12 @@ class ShadowMap {
   void declare(Params& params);
 
   // Creates or re-creates the map, computes the light's matrices, and says whether the map
-  // must be rendered this frame (counted as shadow_map_renders). Any `extraDirty` bits a
-  // lesson's own parameters set (bias, say) also force a render.
+  // must be rendered this frame. Any `extraDirty` bits a lesson's own parameters set (bias,
+  // say) also force a render. renderCasters and renderObject count shadow_map_renders.
   bool prepare(Frame& frame, std::uint32_t extraDirty = kDirtyNothing);
+  // The eye pass reads this map: the frustum the truth counts in, texels per pixel
+  // (LightView::sampledBy).
+  void sampledBy(Frame& frame) const { light_.sampledBy(frame); }
   // Lesson 04's default bias, which 05 and 08 use too: only back faces into the map (seed 003,
   // slide 70), plus glPolygonOffset(factor, units).
   static PassState backFacesBias(float factor, float units) {
@@ -45,9 +48,7 @@ class ShadowMap {
   void drawInset(const Frame& frame, bool fullscreen = false) const;
 
   // Lesson 10: the map through a focused or warped projection (LightView::warp).
-  bool warp(Frame& frame, const glm::mat4& viewProjection) {
-    return light_.warp(frame, viewProjection);
-  }
+  bool warp(const glm::mat4& viewProjection) { return light_.warp(viewProjection); }
   const Texture& texture() const { return texture_; }
   bool off() const { return light_.off(); }
   bool fitted() const { return light_.fitted(); }
