@@ -54,11 +54,7 @@ class PcfDithered final : public Lesson {
                           "compare in the shader (LearnOpenGL), or 4 compares a call (gather)");
     count_ = p.addBool("pcf.count", true,
                        "count taps per fragment (its atomics cost the eye pass ~10%)");
-    // Lesson 04's default bias: back faces into the map, plus glPolygonOffset(factor, units).
-    factor_ =
-        p.addFloat("bias.factor", 1.1f, 0.0f, 20.0f, "glPolygonOffset factor", kDirtyShadowMap);
-    units_ = p.addFloat("bias.units", 4.0f, 0.0f, 1e7f, "glPolygonOffset units", kDirtyShadowMap)
-                 .logScale();
+    bias_.declare(p);  // lesson 04's default: back faces into the map, plus glPolygonOffset
     linear_filter_ = p.at("shadow.filter");
   }
 
@@ -69,11 +65,12 @@ class PcfDithered final : public Lesson {
     nearest_ = Sampler::depth(/*compare=*/true, GL_NEAREST);
     linear_ = Sampler::depth(/*compare=*/true, GL_LINEAR);
     fetch_ = Sampler::depth(/*compare=*/false, GL_NEAREST);  // pcf.lookup=fetch: depths
-    counters_ = CounterBuffer(4);  // taps, filtered, stopped early, facing away
+    counters_ = ShaderCounters(
+        {"pcf_taps", "pcf_filtered_fragments", "pcf_stopped_early", "pcf_skipped_facing_away"});
   }
   void render(Frame& f) override {
     // Lesson 04's default bias: back faces into the map, plus glPolygonOffset.
-    if (map_.prepare(f)) map_.renderCasters(f, ShadowMap::backFacesBias(factor_(), units_()));
+    if (map_.prepare(f)) map_.renderCasters(f, bias_.state());
     map_.sampledBy(f);  // the eye reads this map: the truth counts inside its frustum
     const pcf::Mode mode = mode_();
     const float radius = radius_();
@@ -89,8 +86,7 @@ class PcfDithered final : public Lesson {
     if (map_.drawDepthView(f)) return;
 
     // Counting needs a storage buffer (GL 4.3): elsewhere the counts are unavailable.
-    const bool counting = count_() && f.measure.enabled() && caps().storage_buffers;
-    if (counting) counters_.zeroAndBind(0);
+    const bool counting = counters_.begin(f.measure, count_());
     {
       auto timing = f.measure.pass("eye", /*countPassed=*/true);
       f.clearTarget();
@@ -116,17 +112,7 @@ class PcfDithered final : public Lesson {
       f.drawObjects(e, Objects::All);
       Sampler::unbind(0);
     }
-    const char* const names[4] = {"pcf_taps", "pcf_filtered_fragments", "pcf_stopped_early",
-                                  "pcf_skipped_facing_away"};
-    if (counting) {  // not during the runner's own truth renders
-      const std::vector<GLuint> counts = counters_.read();
-      for (int k = 0; k < 4; ++k) {
-        counts_[k] = counts[static_cast<size_t>(k)];
-        f.measure.count(names[k], static_cast<long long>(counts_[k]));
-      }
-    } else if (count_() && f.measure.enabled()) {
-      for (const char* name : names) f.measure.count(name, std::optional<long long>());
-    }
+    counters_.end(f.measure);
     if (!f.shows(views::kVisibility)) map_.drawInset(f);
   }
 
@@ -220,11 +206,12 @@ class PcfDithered final : public Lesson {
     // Counted only with pcf.count on and storage buffers (GL 4.3); else null, never a number
     // left from another frame.
     if (caps().storage_buffers && count_()) {
-      json.figure("taps_per_filtered_fragment",
-                  counts_[1] > 0
-                      ? std::optional<double>(static_cast<double>(counts_[0]) / counts_[1])
-                      : std::nullopt,
-                  "no fragment was filtered: the map decided none");
+      json.figure(
+          "taps_per_filtered_fragment",
+          counters_.last(1) > 0
+              ? std::optional<double>(static_cast<double>(counters_.last(0)) / counters_.last(1))
+              : std::nullopt,
+          "no fragment was filtered: the map decided none");
     } else {
       json.value("taps_per_filtered_fragment", std::optional<long long>());  // uncounted
     }
@@ -284,13 +271,13 @@ class PcfDithered final : public Lesson {
   Sampler nearest_, linear_, fetch_;
   ChoiceParam<pcf::Lookup> lookup_;
   LookupUsed lookup_used_;
-  CounterBuffer counters_;
-  FloatParam dimming_, radius_, factor_, units_;
+  ShaderCounters counters_;  // taps, filtered, stopped early, facing away
+  FloatParam dimming_, radius_;
+  BackFaceBias bias_;
   ChoiceParam<pcf::Mode> mode_;
   ChoiceParam<> linear_filter_;
   IntParam taps_;
   BoolParam early_out_, count_;
-  GLuint counts_[4] = {0, 0, 0, 0};  // taps, filtered, stopped early, facing away
   float kernel_texels_ = 0;
   AreaLightMatch match_;  // the truth's area light for this kernel (shadow/area_match.hpp)
 };

@@ -69,12 +69,7 @@ class FilterableMaps final : public Lesson {
     inset_ = p.at("inset");
     dimming_ = p.addFloat("dimming", 0.4f, 0.0f, 1.0f,
                           "diffuse left in shadow: dimming + (1-dimming)*shade");
-    // PCF's map is lesson 04's: back faces, plus glPolygonOffset(factor, units).
-    factor_ = p.addFloat("bias.factor", 1.1f, 0.0f, 20.0f, "PCF: glPolygonOffset factor",
-                         kDirtyShadowMap);
-    units_ =
-        p.addFloat("bias.units", 4.0f, 0.0f, 1e7f, "PCF: glPolygonOffset units", kDirtyShadowMap)
-            .logScale();
+    bias_.declare(p, "PCF: ");  // PCF's map is lesson 04's: back faces, plus glPolygonOffset
   }
 
   void init() override {
@@ -103,7 +98,7 @@ class FilterableMaps final : public Lesson {
     match_ = matchAreaLight(f, map_, kernel_texels_);
     f.truth_area_radius = match_.radius;
     if (pcf) {
-      if (rendered) map_.renderCasters(f, ShadowMap::backFacesBias(factor_(), units_()));
+      if (rendered) map_.renderCasters(f, bias_.state());
     } else {
       const bool storage = ensureMoments(map_.width(), map_.height());
       if (rendered || storage) renderMoments(f, method_defines);
@@ -343,7 +338,8 @@ class FilterableMaps final : public Lesson {
   ChoiceParam<Method> method_;
   ChoiceParam<> bits_, linear_filter_;
   BoolParam inset_, mipmaps_;
-  FloatParam radius_, min_variance_, bleeding_, exponent_, dimming_, factor_, units_;
+  FloatParam radius_, min_variance_, bleeding_, exponent_, dimming_;
+  BackFaceBias bias_;
   IntParam taps_;
 };
 

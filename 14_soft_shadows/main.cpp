@@ -37,9 +37,6 @@ pcf::Mode kernelMode(const std::string& name) {
                               : pcf::Mode::Poisson;
 }
 // The counters scene.frag adds to, in its buffer's order.
-const char* const kCounterNames[6] = {"pcss_search_taps",       "pcf_taps",
-                                      "pcf_filtered_fragments", "pcss_no_blocker",
-                                      "pcss_all_blockers",      "pcss_skipped_facing_away"};
 }  // namespace
 
 class SoftShadows final : public Lesson {
@@ -82,11 +79,7 @@ class SoftShadows final : public Lesson {
     count_ = p.addBool("pcss.count", true, "count taps per fragment (atomics cost)");
     dimming_ = p.addFloat("dimming", 0.4f, 0.0f, 1.0f,
                           "diffuse left in shadow: dimming + (1-dimming)*shade");
-    // Lesson 04's default bias: back faces into the map, plus glPolygonOffset(factor, units).
-    factor_ =
-        p.addFloat("bias.factor", 1.1f, 0.0f, 20.0f, "glPolygonOffset factor", kDirtyShadowMap);
-    units_ = p.addFloat("bias.units", 4.0f, 0.0f, 1e7f, "glPolygonOffset units", kDirtyShadowMap)
-                 .logScale();
+    bias_.declare(p);  // lesson 04's default: back faces into the map, plus glPolygonOffset
   }
 
   void init() override {
@@ -95,19 +88,20 @@ class SoftShadows final : public Lesson {
     compare_ = Sampler::depth(/*compare=*/true, GL_NEAREST);  // the filter's compares
     linear_ = Sampler::depth(/*compare=*/true, GL_LINEAR);    // ... with shadow.filter=linear
     depths_ = Sampler::depth(/*compare=*/false, GL_NEAREST);  // the search's depths
-    counters_ = CounterBuffer(6);
+    counters_ =
+        ShaderCounters({"pcss_search_taps", "pcf_taps", "pcf_filtered_fragments", "pcss_no_blocker",
+                        "pcss_all_blockers", "pcss_skipped_facing_away"});
   }
 
   void render(Frame& f) override {
-    if (map_.prepare(f)) map_.renderCasters(f, ShadowMap::backFacesBias(factor_(), units_()));
+    if (map_.prepare(f)) map_.renderCasters(f, bias_.state());
     map_.sampledBy(f);  // the eye reads this map: the truth counts inside its frustum
     // One light for every mode: a technique is scored against the shadow it imitates.
     f.truth_area_radius = light_radius_();
     if (map_.drawDepthView(f)) return;
     search_from_ = searchFrom(f);
 
-    const bool counting = count_() && f.measure.enabled() && caps().storage_buffers;
-    if (counting) counters_.zeroAndBind(0);
+    const bool counting = counters_.begin(f.measure, count_());
     {
       auto timing = f.measure.pass("eye", /*countPassed=*/true);
       f.clearTarget();
@@ -146,15 +140,7 @@ class SoftShadows final : public Lesson {
       Sampler::unbind(0);
       Sampler::unbind(1);
     }
-    if (counting) {  // not during the runner's own truth renders
-      const std::vector<GLuint> counts = counters_.read();
-      for (size_t k = 0; k < 6; ++k) {
-        counts_[k] = counts[k];
-        f.measure.count(kCounterNames[k], static_cast<long long>(counts_[k]));
-      }
-    } else if (count_() && f.measure.enabled()) {
-      for (const char* name : kCounterNames) f.measure.count(name, std::optional<long long>());
-    }
+    counters_.end(f.measure);
     if (!f.shows(views::kVisibility)) map_.drawInset(f);
   }
 
@@ -249,10 +235,12 @@ class SoftShadows final : public Lesson {
     const auto ratio = [](GLuint a, GLuint b) {
       return b > 0 ? std::optional<double>(static_cast<double>(a) / b) : std::nullopt;
     };
-    json.figure("taps_per_filtered_fragment", ratio(counts_[1], counts_[2]),
+    json.figure("taps_per_filtered_fragment", ratio(counters_.last(1), counters_.last(2)),
                 "no fragment was filtered: every one was lit or in umbra by its search");
-    const GLuint shaded = counts_[2] + counts_[3] + counts_[4];  // fragments the map decided
-    json.figure("search_taps_per_fragment", ratio(counts_[0], shaded), "no fragment read the map");
+    const GLuint shaded =
+        counters_.last(2) + counters_.last(3) + counters_.last(4);  // fragments the map decided
+    json.figure("search_taps_per_fragment", ratio(counters_.last(0), shaded),
+                "no fragment read the map");
   }
 
  private:
@@ -288,13 +276,13 @@ class SoftShadows final : public Lesson {
   ShadowMap map_;
   ProgramVariants eye_programs_;
   Sampler compare_, linear_, depths_;
-  CounterBuffer counters_;
+  ShaderCounters counters_;
   ChoiceParam<SoftMode> mode_;
   ChoiceParam<> kernel_, filter_, search_cut_;
-  FloatParam light_radius_, fixed_radius_, dimming_, factor_, units_;
+  FloatParam light_radius_, fixed_radius_, dimming_;
+  BackFaceBias bias_;
   IntParam search_taps_, taps_;
   BoolParam skip_umbra_, count_;
-  GLuint counts_[6] = {0, 0, 0, 0, 0, 0};
   float search_from_ = 0.0f;  // the distance from the light where the search cone is cut
 };
 

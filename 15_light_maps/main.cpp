@@ -79,11 +79,7 @@ class LightMaps final : public Lesson {
     move_z_ = p.addFloat("move.z", 0.0f, -4.0f, 4.0f, "move the object along z after the bake");
     dimming_ = p.addFloat("dimming", 0.4f, 0.0f, 1.0f,
                           "diffuse left in shadow: dimming + (1-dimming)*shade");
-    // Lesson 04's default bias for the map: back faces, plus glPolygonOffset(factor, units).
-    factor_ =
-        p.addFloat("bias.factor", 1.1f, 0.0f, 20.0f, "glPolygonOffset factor", kDirtyShadowMap);
-    units_ = p.addFloat("bias.units", 4.0f, 0.0f, 1e7f, "glPolygonOffset units", kDirtyShadowMap)
-                 .logScale();
+    bias_.declare(p);  // lesson 04's default for the map: back faces, plus glPolygonOffset
     // What acts only in some modes says so on the panel (greyed, with why).
     const auto baked_only = [](const Params& ps) -> std::string {
       return ps.at("lightmap.mode").is("baked") ? "the baked mode reads no shadow map" : "";
@@ -91,7 +87,7 @@ class LightMaps final : public Lesson {
     const auto map_only = [](const Params& ps) -> std::string {
       return ps.at("lightmap.mode").is("map") ? "the map mode bakes nothing" : "";
     };
-    for (Param* q : {&factor_.param(), &units_.param(), &p.at("shadow.size"),
+    for (Param* q : {bias_.params()[0], bias_.params()[1], &p.at("shadow.size"),
                      &p.at("shadow.height"), &p.at("shadow.format"), &p.at("shadow.filter"),
                      &p.at("shadow.fit"), &p.at("shadow.cache"), &p.at("inset")}) {
       // Keep what the map's own settings say (shadow.height: only with a size of its own).
@@ -157,7 +153,7 @@ class LightMaps final : public Lesson {
     if (mode_() != Mode::Baked) f.shadow_sampling = map_.light().sampling();
     if (stale) map_holds_ = MapHolds::Nothing;
     if (needed != MapHolds::Nothing && needed != map_holds_) {
-      const PassState bias = ShadowMap::backFacesBias(factor_(), units_());
+      const PassState bias = bias_.state();
       if (needed == MapHolds::Moving) {
         map_.renderObject(f, moving, bias);
       } else {
@@ -464,7 +460,8 @@ class LightMaps final : public Lesson {
   long long bake_rays_ = 0;
   ChoiceParam<Mode> mode_;
   ChoiceParam<> filter_, bake_at_;
-  FloatParam density_, radius_, move_x_, move_z_, dimming_, factor_, units_;
+  FloatParam density_, radius_, move_x_, move_z_, dimming_;
+  BackFaceBias bias_;
   IntParam samples_, padding_, moving_;
   BoolParam centres_, dilate_;
 };

@@ -1,5 +1,7 @@
 #include "gl/measure.hpp"
 
+#include "gl/caps.hpp"
+
 #include <algorithm>
 
 namespace shadows {
@@ -180,6 +182,28 @@ std::map<std::string, double> Measure::medianPassMs() const {
   std::map<std::string, double> out;
   for (const auto& [name, times] : pass_ms_) out[name] = median(times);
   return out;
+}
+
+ShaderCounters::ShaderCounters(std::vector<std::string> names)
+    : names_(std::move(names)), buffer_(static_cast<int>(names_.size())), last_(names_.size(), 0) {}
+
+bool ShaderCounters::begin(const Measure& measure, bool wanted, GLuint binding) {
+  wanted_ = wanted;
+  counting_ = wanted && measure.enabled() && caps().storage_buffers;
+  if (counting_) buffer_.zeroAndBind(binding);
+  return counting_;
+}
+
+void ShaderCounters::end(Measure& measure) {
+  if (counting_) {
+    const std::vector<GLuint> counts = buffer_.read();
+    for (size_t k = 0; k < names_.size(); ++k) {
+      last_[k] = counts[k];
+      measure.count(names_[k], static_cast<long long>(counts[k]));
+    }
+  } else if (wanted_ && measure.enabled()) {
+    for (const std::string& name : names_) measure.count(name, std::optional<long long>());
+  }
 }
 
 }  // namespace shadows

@@ -110,4 +110,27 @@ class Measure {
 // A count as the panel says it: the number, or "unavailable on <flavour>".
 std::string countText(const std::optional<long long>& count);
 
+// Counters a shader adds to per fragment (a storage buffer, GL 4.3; lessons 05 and 14), read
+// back after the pass into the Measure under their names. Where the context has no storage
+// buffers the counts are unavailable, never a wrong number.
+class ShaderCounters {
+ public:
+  ShaderCounters() = default;
+  explicit ShaderCounters(std::vector<std::string> names);  // a context is current
+  // Before the pass: whether this frame counts (`wanted`, the measure on, storage buffers);
+  // if so the counters are zeroed and bound to storage binding `binding`.
+  bool begin(const Measure& measure, bool wanted, GLuint binding = 0);
+  // After it: the counts into `measure` and last(), or each said unavailable where counting
+  // was wanted and cannot be done. Nothing while the measure is off (the runner's renders
+  // for the truth), and last() keeps the counted frame's.
+  void end(Measure& measure);
+  GLuint last(size_t k) const { return last_[k]; }
+
+ private:
+  std::vector<std::string> names_;
+  CounterBuffer buffer_;
+  std::vector<GLuint> last_;
+  bool wanted_ = false, counting_ = false;
+};
+
 }  // namespace shadows

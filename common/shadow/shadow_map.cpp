@@ -88,4 +88,12 @@ void ShadowMap::drawInset(const Frame& frame, bool fullscreen) const {
   frame.drawDepthInset(texture_, fr.near, fr.far, !fr.directional, fullscreen);
 }
 
+void BackFaceBias::declare(Params& p, const std::string& helpPrefix) {
+  factor_ = p.addFloat("bias.factor", 1.1f, 0.0f, 20.0f, helpPrefix + "glPolygonOffset factor",
+                       kDirtyShadowMap);
+  units_ = p.addFloat("bias.units", 4.0f, 0.0f, 1e7f, helpPrefix + "glPolygonOffset units",
+                      kDirtyShadowMap)
+               .logScale();
+}
+
 }  // namespace shadows

@@ -3,6 +3,9 @@
 // re-render decision). The passes themselves stay in the lessons.
 #pragma once
 
+#include <array>
+#include <string>
+
 #include "shadow/light_view.hpp"
 
 namespace shadows {
@@ -78,6 +81,19 @@ class ShadowMap {
   Program depth_only_;  // renderCasters' own, compiled on first use
   ChoiceParam<> format_, filter_param_;
   BoolParam inset_;
+};
+
+// Lesson 04's default bias as the sliders 05, 13, 14 and 15 offer: back faces into the map,
+// plus glPolygonOffset(bias.factor, bias.units) (ShadowMap::backFacesBias).
+class BackFaceBias {
+ public:
+  // bias.factor and bias.units, each help line after `helpPrefix` (13: "PCF: ").
+  void declare(Params& params, const std::string& helpPrefix = "");
+  PassState state() const { return ShadowMap::backFacesBias(factor_(), units_()); }
+  std::array<Param*, 2> params() { return {&factor_.param(), &units_.param()}; }
+
+ private:
+  FloatParam factor_, units_;
 };
 
 }  // namespace shadows
