@@ -217,10 +217,10 @@ class FilterableMaps final : public Lesson {
   // The truth's penumbra, umbra and lit area, as lesson 14 has them, and the light that bleeds:
   // pixels drawn lighter than the truth by more than 0.25.
   std::vector<ErrorRegion> errorRegions() const override {
-    const auto all = [](glm::vec4) { return true; };
-    return {{"penumbra", all, [](float t, float) { return t > 0.0f && t < 1.0f; }},
-            {"umbra", all, [](float t, float) { return t == 0.0f; }},
-            {"bleeding", all, [](float t, float r) { return r > t + 0.25f; }}};
+    // Light bleeding: drawn lighter than the truth by more than a quarter.
+    return {ErrorRegion::penumbra(),
+            ErrorRegion::umbra(),
+            {"bleeding", ErrorRegion::anywhere, [](float t, float r) { return r > t + 0.25f; }}};
   }
 
   void report(JsonWriter& json) const override {

@@ -216,10 +216,7 @@ class SoftShadows final : public Lesson {
   // The penumbra, the umbra and the lit area as the truth draws them: a soft shadow is right
   // or wrong mostly in the first.
   std::vector<ErrorRegion> errorRegions() const override {
-    const auto all = [](glm::vec4) { return true; };
-    return {{"penumbra", all, [](float t, float) { return t > 0.0f && t < 1.0f; }},
-            {"umbra", all, [](float t, float) { return t == 0.0f; }},
-            {"lit", all, [](float t, float) { return t == 1.0f; }}};
+    return {ErrorRegion::penumbra(), ErrorRegion::umbra(), ErrorRegion::lit()};
   }
 
   void report(JsonWriter& json) const override {

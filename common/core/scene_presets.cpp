@@ -53,21 +53,34 @@ Scene torusPyramid() {
   return s;
 }
 
+// A room's shell, 08's and 11's: the floor, then plaster walls 3 high that receive but cast
+// nothing (the light is inside the room, they bound what it sees): the back wall at
+// z = -depth and the left one at x = -6, each as long as the room is deep, and the right one
+// at x = 6 where `right`.
+void addRoomShell(Scene& s, float depth, bool right) {
+  const glm::mat4 one(1.0f);
+  const glm::vec3 plaster{0.72f, 0.7f, 0.66f};
+  s.objects.push_back(floorObject(6.0f, 0.0f));
+  s.objects.push_back(receiverPlane(
+      "back_wall", 6.0f, 3.0f,
+      translate({0, 3, -depth}) * glm::rotate(one, glm::radians(90.0f), {1, 0, 0}), plaster));
+  s.objects.push_back(receiverPlane(
+      "left_wall", 3.0f, depth,
+      translate({-6, 3, 0}) * glm::rotate(one, glm::radians(-90.0f), {0, 0, 1}), plaster));
+  if (right) {
+    s.objects.push_back(receiverPlane(
+        "right_wall", 3.0f, depth,
+        translate({6, 3, 0}) * glm::rotate(one, glm::radians(90.0f), {0, 0, 1}), plaster));
+  }
+}
+
 // Lesson 08's dusty room (seed 000, "Combining Shadows with Atmospherics"): a floor and two
 // walls, a spotlight high in a corner shining down past a pillar, a floating sphere and a
 // torus, so the light shafts in the air are visibly cut by them.
 Scene room() {
   Scene s;
   const glm::mat4 one(1.0f);
-  const glm::vec3 plaster{0.72f, 0.7f, 0.66f};
-  s.objects.push_back(floorObject(6.0f, 0.0f));
-  // Walls receive but cast nothing: the light is inside the room, they bound what it sees.
-  s.objects.push_back(receiverPlane(
-      "back_wall", 6.0f, 3.0f,
-      translate({0, 3, -5}) * glm::rotate(one, glm::radians(90.0f), {1, 0, 0}), plaster));
-  s.objects.push_back(receiverPlane(
-      "left_wall", 3.0f, 5.0f,
-      translate({-6, 3, 0}) * glm::rotate(one, glm::radians(-90.0f), {0, 0, 1}), plaster));
+  addRoomShell(s, 5.0f, /*right=*/false);
   s.objects.push_back({"pillar",
                        makeBox({0.35f, 1.6f, 0.35f}),
                        translate({-0.6f, 1.6f, -1.0f}),
@@ -91,17 +104,7 @@ Scene room() {
 Scene bulb() {
   Scene s;
   const glm::mat4 one(1.0f);
-  const glm::vec3 plaster{0.72f, 0.7f, 0.66f};
-  s.objects.push_back(floorObject(6.0f, 0.0f));
-  s.objects.push_back(receiverPlane(
-      "back_wall", 6.0f, 3.0f,
-      translate({0, 3, -6}) * glm::rotate(one, glm::radians(90.0f), {1, 0, 0}), plaster));
-  s.objects.push_back(receiverPlane(
-      "left_wall", 3.0f, 6.0f,
-      translate({-6, 3, 0}) * glm::rotate(one, glm::radians(-90.0f), {0, 0, 1}), plaster));
-  s.objects.push_back(receiverPlane(
-      "right_wall", 3.0f, 6.0f,
-      translate({6, 3, 0}) * glm::rotate(one, glm::radians(90.0f), {0, 0, 1}), plaster));
+  addRoomShell(s, 6.0f, /*right=*/true);
   s.objects.push_back({"table_top",
                        makeBox({0.9f, 0.04f, 0.6f}),
                        translate({0.2f, 1.0f, 0.1f}),

@@ -190,6 +190,19 @@ struct ErrorRegion {
   std::string name;
   std::function<bool(glm::vec4 position)> inside;
   std::function<bool(float truth, float rendered)> pixel_inside = {};
+
+  static bool anywhere(glm::vec4) { return true; }
+  // Regions by the truth's visibility alone, anywhere in the frame (13 and 14): the area
+  // light partly seen, not at all, wholly.
+  static ErrorRegion penumbra() {
+    return {"penumbra", anywhere, [](float t, float) { return t > 0.0f && t < 1.0f; }};
+  }
+  static ErrorRegion umbra() {
+    return {"umbra", anywhere, [](float t, float) { return t == 0.0f; }};
+  }
+  static ErrorRegion lit() {
+    return {"lit", anywhere, [](float t, float) { return t == 1.0f; }};
+  }
 };
 
 class Lesson {
