@@ -28,7 +28,7 @@ inline constexpr View kTruth{"truth"};             // the ray-traced visibility 
 inline constexpr View kError{"error"};             // rendered against the truth (the runner's)
 inline constexpr View kAliasing{"aliasing"};       // texels per pixel over the shaded frame
 inline constexpr View kTexels{"texels"};           // the texel pass, never offered as a choice
-inline constexpr View kLightDepth{"light_depth"};  // the map, as ShadowMap::drawLightDepth shows it
+inline constexpr View kLightDepth{"light_depth"};  // the map, as ShadowMap::drawDepthView shows it
 inline constexpr View kAir{"air"};  // a medium's in-scattered light alone (08; Frame::medium)
 }  // namespace views
 
