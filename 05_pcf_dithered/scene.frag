@@ -60,8 +60,7 @@ void main() {
 #else
   // The facing test asks only the sign of N.L: the geometric normal (facing the eye) and the
   // way to the light need no normalize.
-  vec3 n = cross(dFdx(vWorld), dFdy(vWorld));
-  float shade = shadowTerm(n, uLightDirectional == 1 ? -uLightDir : uLightPos - vWorld);
+  float shade = shadowTerm(cross(dFdx(vWorld), dFdy(vWorld)), towardLight(vWorld));
 #endif
 #if VIEW == VIEW_SHADED
   {

@@ -11,6 +11,11 @@ vec3 directionToLight(vec3 p) {
   return uLightDirectional == 1 ? -uLightDir : normalize(uLightPos - p);
 }
 
+// The same way, not normalized: enough where only a sign is asked (a facing test).
+vec3 towardLight(vec3 p) {
+  return uLightDirectional == 1 ? -uLightDir : uLightPos - p;
+}
+
 vec3 shadeSurface(vec3 albedo, vec3 p, vec3 n, float shade) {
   vec3 l = directionToLight(p);
   float nl = max(dot(n, l), 0.0);
