@@ -2,7 +2,7 @@
 # Instructions per frame, counted by callgrind: deterministic where timings on a shared machine
 # are not. One headless run of LESSON (--frames 4, no truth) with a callgrind dump before each
 # frame the runner renders and after each of its measured passes (gl/measure.hpp: a pass ends
-# in glFinish, so its rasterization is its own); common/run/outputs.cpp interleaves the
+# in glFinish, so its rasterization is its own); the headless run (run/headless_run.cpp) interleaves the
 # lesson's frames with their shadow.off baseline frames, so after the warm-ups the frames
 # alternate: baseline, frame, ... llvmpipe rasterizes in the calling thread (LP_NUM_THREADS=0),
 # so a pass's shading lands in its own dump. Prints the median of the 3 steady frames and of
@@ -25,13 +25,13 @@ command -v valgrind >/dev/null || {
 }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-LP_NUM_THREADS=0 valgrind --tool=callgrind --dump-before='*Runner::renderInto*' \
+LP_NUM_THREADS=0 valgrind --tool=callgrind --dump-before='*Runner::render(*' \
   --dump-after='*Measure::Pass::~Pass*' --callgrind-out-file="$tmp/cg.out" "$binary" --headless \
   --no-truth --frames 4 "$@" --out /dev/null >/dev/null 2>"$tmp/valgrind.log" ||
   { cat "$tmp/valgrind.log" >&2; exit 1; }
 # Rendered frames, in order: 1 the warm-up frame, 2 the warm-up baseline, 3 the first timed
 # baseline (it still allocates), then 4 6 8 frames and 5 7 9 baselines. A dump before
-# renderInto closes the frame before it (what ran between its last pass and the next frame:
+# Runner::render closes the frame before it (what ran between its last pass and the next frame:
 # its tail); one after a pass closes that pass.
 python3 - "$tmp" <<'PY'
 import glob, re, statistics, sys

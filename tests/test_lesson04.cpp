@@ -318,7 +318,7 @@ namespace {
 
 TEST(Lesson04, AnExerciseChosenInThePanelLocksWhatItDoesNotAllowAndSavesWhatTheStudentMoved) {
   auto runner = startLesson(kLesson, {"inset=false"}, 900, 1000, /*panel=*/true);
-  ASSERT_EQ(runner->exercises().choose(1), "");
+  ASSERT_EQ(runner->chooseExercise(1), "");
   EXPECT_EQ(runner->params().at("scene").choice(), "grazing") << "its own starting point";
   runner->setMouse({-1, -1}, false);
   runner->renderFrame();
@@ -353,9 +353,9 @@ TEST(Lesson04, AnExerciseChosenInThePanelLocksWhatItDoesNotAllowAndSavesWhatTheS
             "?exercise=1&bias.mode=back_faces&bias.factor=1.1&bias.units=0&bias.clamp=0.25");
   std::filesystem::remove(file);
   // None: every slider free again, the defaults back.
-  ASSERT_EQ(runner->exercises().choose(0), "");
+  ASSERT_EQ(runner->chooseExercise(0), "");
   EXPECT_EQ(runner->params().at("scene").choice(), "torus_pyramid");
-  EXPECT_NE(runner->exercises().choose(5), "");
+  EXPECT_NE(runner->chooseExercise(5), "");
   EXPECT_EQ(runner->glErrors(), 0);
 }
 

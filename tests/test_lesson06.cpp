@@ -225,7 +225,7 @@ TEST(Lesson06, AnExerciseChosenAfterAnotherSceneStartsFromItsOwnLight) {
   // the exercise's near and far are what the frame draws with, not the preset's.
   auto runner = startLesson(kLesson, {"scene=cubes"}, 320, 240);
   runner->renderFrame();
-  ASSERT_EQ(runner->exercises().choose(1), "");
+  ASSERT_EQ(runner->chooseExercise(1), "");
   runner->renderFrame();
   EXPECT_FLOAT_EQ(runner->params().at("light.near").f(), 0.1f);
   EXPECT_FLOAT_EQ(runner->params().at("light.far").f(), 500.0f);

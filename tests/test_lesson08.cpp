@@ -191,7 +191,7 @@ TEST(Lesson08, AWideSpotIsNoWorseAndMoreSlicesStillHelp) {
 std::vector<float> airLight(const std::vector<std::string>& sets) {
   auto runner = startLesson(kLesson, sets);
   runner->renderFrame();
-  return runner->renderRed(views::kAir);
+  return runner->errors().renderRed(views::kAir);
 }
 
 TEST(Lesson08, TheConeBoundChangesTheCostNotTheAir) {

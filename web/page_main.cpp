@@ -67,7 +67,7 @@ std::string exerciseSummary() {
   if (ex == nullptr) return "";
   const shadows::Verdict& v = g_runner->exercises().verdict();
   std::string line =
-      "\nexercise " + std::to_string(g_runner->options().exercise) + " (" + ex->title + "): ";
+      "\nexercise " + std::to_string(g_runner->exercises().number()) + " (" + ex->title + "): ";
   return line + (v.figures.empty() ? "measuring..." : v.line());
 }
 

@@ -3,43 +3,24 @@
 // page's worker; truth_measure.cpp traces and compares.
 #include "run/error_measure.hpp"
 
-#include "run/runner.hpp"
-
-#include "core/spotlight.hpp"
-#include "run/runner_gpu.hpp"
-
-#include "core/json.hpp"
-#include "gl/context.hpp"
-
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
-#include <imgui.h>
-#include <imgui_impl_glfw.h>
-#include <imgui_impl_opengl3.h>
-
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
-#include <glm/gtc/matrix_transform.hpp>
-#include <map>
+
+#include "run/run_options.hpp"
+#include "run/scene_host.hpp"
+#include "run/side_passes.hpp"
 
 namespace shadows {
 
-std::vector<float> Runner::renderVisibility() {
-  return renderRed(views::kVisibility);
-}
-
-std::vector<float> Runner::renderRed(View view) {
+std::vector<float> ErrorMeasure::renderRed(View view) {
   const int w = options_.width, h = options_.height;
-  gpu_->ensureFloatTargets(w, h);
-  const GLuint fbo = gpu_->float_target->id();
+  floats_.ensure(w, h);
+  const GLuint fbo = floats_.id();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glClearColor(0, 0, 0, 0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  renderInto(fbo, w, h, view, false, false);
+  frames_.render({fbo, w, h, view, /*timed=*/false, /*panel=*/false});
   std::vector<glm::vec4> rgba(static_cast<size_t>(w) * h);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
@@ -49,11 +30,37 @@ std::vector<float> Runner::renderRed(View view) {
   return red;
 }
 
-std::string ErrorMeasure::key() const {
-  // Everything that can change the picture: every parameter but the view, and the size.
-  std::string key = std::to_string(r_.options_.width) + "x" + std::to_string(r_.options_.height);
+void ErrorMeasure::initGl() {
+  const auto dir = commonShaderDir();
+  gbuffer_ = Program(dir / "gbuffer.vert", dir / "gbuffer.frag");
+}
+
+void ErrorMeasure::releaseGl() {
+  gbuffer_ = Program();
+  surface_.reset();
+  surface_position_ = Texture();
+  surface_normal_ = Texture();
+  surface_depth_ = Texture();
+  surface_w_ = surface_h_ = 0;
+}
+
+void ErrorMeasure::ensureSurface(int width, int height) {
+  if (width == surface_w_ && height == surface_h_) return;
+  surface_w_ = width, surface_h_ = height;
+  surface_position_ = Texture::color(width, height, GL_RGBA32F);
+  surface_normal_ = Texture::color(width, height, GL_RGBA32F);
+  surface_depth_ = Texture::depthStencil(width, height);
+  surface_ = std::make_unique<Framebuffer>();
+  surface_->attachColor(surface_position_, 0);
+  surface_->attachColor(surface_normal_, 1);
+  surface_->attachDepthStencil(surface_depth_);
+  surface_->check();
+}
+
+std::string pictureKey(const RunOptions& options, const Params& params, const SceneHost& host) {
+  std::string key = std::to_string(options.width) + "x" + std::to_string(options.height);
   char value[40];
-  for (const auto& p : r_.params_.all()) {
+  for (const auto& p : params.all()) {
     if (p.name == "view") continue;
     // Full precision: text() rounds to 6 digits, and nearby values must not share a key.
     key += ";" + p.name + "=" + p.string_value;
@@ -63,7 +70,7 @@ std::string ErrorMeasure::key() const {
     }
   }
   // A light map finished baking (lesson 15) changes the picture with no parameter moved.
-  const BakeState& bake = r_.host_.bakeState();
+  const BakeState& bake = host.bakeState();
   if (bake.stage != BakeState::Stage::kNone) {
     key += ";bake=" + std::to_string(bake.id) + "," + std::to_string(static_cast<int>(bake.stage));
   }
@@ -73,19 +80,20 @@ std::string ErrorMeasure::key() const {
 TruthInputs ErrorMeasure::gatherInputs() {
   TruthInputs in;
   in.key = key();
-  const int w = r_.options_.width, h = r_.options_.height;
+  const int w = options_.width, h = options_.height;
   const size_t n = static_cast<size_t>(w) * h;
   in.width = w, in.height = h;
-  const bool was_enabled = r_.measure_->enabled();
-  r_.measure_->setEnabled(false);
+  Measure& lesson_measure = frames_.lessonMeasure();
+  const bool was_enabled = lesson_measure.enabled();
+  lesson_measure.setEnabled(false);
 
-  r_.texels_.measure();  // what the panel shows next to the error, measured when it is
+  texels_.measure();  // what the panel shows next to the error, measured when it is
   // The lesson's shadow term, and its shaded picture in float to catch NaN and Inf.
-  in.rendered = r_.renderVisibility();  // ensures the float targets at this size
-  const GLuint fbo = r_.gpu_->float_target->id();
+  in.rendered = renderRed(views::kVisibility);  // ensures the float target at this size
+  const GLuint fbo = floats_.id();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  r_.renderInto(fbo, w, h, views::kShaded, false, false);
+  const FrameOutputs told = frames_.render({fbo, w, h, views::kShaded, false, false});
   in.shaded.resize(n);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
@@ -94,27 +102,29 @@ TruthInputs ErrorMeasure::gatherInputs() {
   // The surface seen by each pixel, from the runner's own geometry pass.
   TruthJob& job = in.job;
   job.surface = {w, h, std::vector<glm::vec4>(n), std::vector<glm::vec4>(n)};
-  r_.gpu_->surface->bind();
+  ensureSurface(w, h);
+  surface_->bind();
   glViewport(0, 0, w, h);
   const float clear_position[4] = {0, 0, 0, -1};
   const float clear_normal[4] = {0, 0, 0, 0};
-  r_.resetGlState();  // whatever the lesson left set must not shape the truth's surfaces
+  resetGlState();  // whatever the lesson left set must not shape the truth's surfaces
   glClearBufferfv(GL_COLOR, 0, clear_position);
   glClearBufferfv(GL_COLOR, 1, clear_normal);
   glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  const Light light = r_.currentLight();
-  Frame frame(r_.host_, r_.params_, r_.scene(), *r_.measure_, light);
-  frame.eye = r_.params_.at("camera.pos").v();  // drawn in the order the lesson's eye pass was
+  const Light light = frames_.currentLight();
+  const Scene& scene = host_.scene();
+  Frame frame(host_, params_, scene, lesson_measure, light);
+  frame.eye = params_.at("camera.pos").v();  // drawn in the order the lesson's eye pass was
   // The very camera the lesson drew with, or truth and picture would not line up.
-  r_.gpu_->gbuffer.set("uViewProjection", r_.cameraProjection(w, h) * r_.cameraView());
-  r_.gpu_->gbuffer.set("uHasLightFrustum", r_.told_.light_frustum ? 1 : 0);
-  r_.gpu_->gbuffer.set("uLightViewProjection", r_.told_.light_frustum.value_or(glm::mat4(1.0f)));
-  const Frame::LightReach reach = r_.told_.light_reach.value_or(Frame::LightReach{});
-  r_.gpu_->gbuffer.set("uHasLightReach", r_.told_.light_reach ? 1 : 0);
-  r_.gpu_->gbuffer.set("uReachLight", reach.position);
-  r_.gpu_->gbuffer.set("uReach",
-                       glm::vec3(reach.near, reach.far, reach.far_along_axis ? 1.0f : 0.0f));
-  frame.drawObjects(r_.gpu_->gbuffer, Objects::All, nullptr);
+  const glm::mat4 view_projection = frames_.cameraProjection(w, h) * frames_.cameraView();
+  gbuffer_.set("uViewProjection", view_projection);
+  gbuffer_.set("uHasLightFrustum", told.light_frustum ? 1 : 0);
+  gbuffer_.set("uLightViewProjection", told.light_frustum.value_or(glm::mat4(1.0f)));
+  const Frame::LightReach reach = told.light_reach.value_or(Frame::LightReach{});
+  gbuffer_.set("uHasLightReach", told.light_reach ? 1 : 0);
+  gbuffer_.set("uReachLight", reach.position);
+  gbuffer_.set("uReach", glm::vec3(reach.near, reach.far, reach.far_along_axis ? 1.0f : 0.0f));
+  frame.drawObjects(gbuffer_, Objects::All, nullptr);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, job.surface.position.data());
   glReadBuffer(GL_COLOR_ATTACHMENT1);
@@ -122,37 +132,36 @@ TruthInputs ErrorMeasure::gatherInputs() {
 
   // The triangles always travel with the job (a tracer built for them is kept in truth_
   // while the scene stays): a job is whole wherever it is traced.
-  r_.scene().worldTriangles(job.positions, job.triangles);
-  job.scene_radius = r_.scene().bounds().radius();
+  scene.worldTriangles(job.positions, job.triangles);
+  job.scene_radius = scene.bounds().radius();
   in.truth = truth_.tracerFor(job);
   in.given = truth_.given;
-  in.keep_bytes = !r_.options_.truth_job.empty() || !r_.options_.truth_result.empty();
+  in.keep_bytes = !options_.truth_job.empty() || !options_.truth_result.empty();
   job.light.position = light.position;
   job.light.direction = light.direction;
   job.light.directional = light.directional;
-  job.light.radius = r_.told_.truth_area_radius;
+  job.light.radius = told.truth_area_radius;
   job.light.samples = 64;
   in.truth_name = light.directional ? "directional" : "point";
-  if (r_.told_.truth_area_radius > 0.0f) {
+  if (told.truth_area_radius > 0.0f) {
     char name[64];
-    std::snprintf(name, sizeof name, "area r=%g n=%d", r_.told_.truth_area_radius,
-                  job.light.samples);
+    std::snprintf(name, sizeof name, "area r=%g n=%d", told.truth_area_radius, job.light.samples);
     in.truth_name = name;
   }
-  if (r_.told_.medium) {
+  if (told.medium) {
     // The lesson's air light alone, unscaled, against single scattering traced along the
     // very eye rays of its pixels.
     TruthJob::Air air;
-    air.medium = *r_.told_.medium;
+    air.medium = *told.medium;
     air.medium.spot = nullptr;
     // A copy of the spot texture: the lesson may load another while the truth is traced.
-    if (r_.told_.medium->spot != nullptr) air.spot = *r_.told_.medium->spot;
-    air.eye = r_.params_.at("camera.pos").v();
-    air.inverse_view_projection = glm::inverse(r_.cameraProjection(w, h) * r_.cameraView());
+    if (told.medium->spot != nullptr) air.spot = *told.medium->spot;
+    air.eye = params_.at("camera.pos").v();
+    air.inverse_view_projection = glm::inverse(view_projection);
     job.air = std::move(air);
-    in.air_rendered = r_.renderRed(views::kAir);
+    in.air_rendered = renderRed(views::kAir);
   }
-  r_.measure_->setEnabled(was_enabled);
+  lesson_measure.setEnabled(was_enabled);
   return in;
 }
 
@@ -166,7 +175,7 @@ const ErrorState& ErrorMeasure::measure() {
   // A page cannot wait for its worker; its answer, when it comes, answers no job any more.
   truth_.page_job.reset();
   if (truth_.current(key())) {
-    r_.exercise_.judge();
+    measured();
     return truth_.error();
   }
   install(traceTruth(gatherInputs()));
@@ -177,12 +186,12 @@ const ErrorState& ErrorMeasure::measure() {
 // `truth` that draws none of the lesson's own frames): the picture is about to change, so the
 // window traces once the bake is in.
 bool ErrorMeasure::bakeBegan() const {
-  return r_.host_.bakeState().stage == BakeState::Stage::kRunning;
+  return host_.bakeState().stage == BakeState::Stage::kRunning;
 }
 
 void ErrorMeasure::install(TruthResult result) {
   truth_.install(std::move(result), key());
-  r_.exercise_.judge();
+  measured();
 }
 
 #ifndef __EMSCRIPTEN__

@@ -1,155 +1,142 @@
-// The ImGui panel: the lesson's sliders, cost and error, in foldable sections.
+// The ImGui panel, the Runner's part: its sections (the lesson's idea first, then what every
+// lesson shares, the cost, the error) and the exercise. The panel's texture in a window is
+// RunnerWindow's (window.cpp).
 #include "run/runner.hpp"
 
-#include "run/runner_gpu.hpp"
-#include "truth/truth_job.hpp"
-
-#include "core/json.hpp"
-#include "gl/context.hpp"
-#include "math/texel_density.hpp"
-
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
 #include <imgui.h>
-#include <imgui_impl_glfw.h>
-#include <imgui_impl_opengl3.h>
 
 #include <algorithm>
 #include <cfloat>
-#include <chrono>
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <fstream>
-#include <glm/gtc/matrix_transform.hpp>
-#include <map>
+
+#include "gl/caps.hpp"
+#include "truth/truth_job.hpp"
 
 namespace shadows {
 
-std::string RunnerWindow::costSummary() const {
-  // The report's numbers (median of the timed frames so far), so panel and report agree.
-  char line[128];
-#ifdef __EMSCRIPTEN__
-  // WebGL returns from glFinish before the GPU process has drawn: a page's wall times count
-  // only its calls. Its frame is timed on the GPU where the browser has a timer; where not,
-  // it says so once, never a time that is not the frame's.
-  if (!caps().gpu_timer) {
-    return "frame: this browser has no GPU timer (WebGL 2's EXT_disjoint_timer_query_webgl2): "
-           "run the lesson natively for its cost";
-  }
-  const size_t gpu_frames = r_.measure_->gpuTimedFrames();
-  if (gpu_frames == 0) return "GPU frame: measuring...";
-  std::snprintf(line, sizeof line, "GPU frame %.2f ms (median of %zu)",
-                r_.measure_->medianGpuFrameMs(), gpu_frames);
-  return line;
-#else
-  const size_t frames = r_.measure_->timedFrames();
-  if (frames == 0) return "frame: measuring...";
-  std::snprintf(line, sizeof line, "frame %.2f ms (median of %zu)", r_.measure_->medianFrameMs(),
-                frames);
-  std::string summary = line;
-  if (const double overhead = r_.baseline_.overhead(); overhead > 0.0) {
-    std::snprintf(line, sizeof line, "\nshadow: %.2fx the frame without it (%.2f ms)", overhead,
-                  r_.baseline_.measure().medianFrameMs());
-    summary += line;
-  }
-  return summary;
-#endif
-}
+namespace {
 
-std::string RunnerWindow::counterSummary() const {
-  std::string counts;
-  for (const auto& [name, count] : r_.measure_->lastFrameCounts()) {
-    counts += (counts.empty() ? "" : ", ") + name + " " + std::to_string(count);
-  }
-  for (const std::string& name : r_.measure_->lastFrameUnavailable()) {
-    counts += (counts.empty() ? "" : ", ") + name + " " + caps().unavailable();
-  }
-  return counts;
-}
-
-bool RunnerWindow::panelDue(int width, int height) {
-  Runner::Gpu& g = *r_.gpu_;
-  glm::dvec2 cursor;
-  glfwGetCursorPos(g.window, &cursor.x, &cursor.y);
-  bool down = false;
-  for (int b = GLFW_MOUSE_BUTTON_1; b <= GLFW_MOUSE_BUTTON_3; ++b) {
-    down = down || glfwGetMouseButton(g.window, b) == GLFW_PRESS;
-  }
-  const auto now = std::chrono::steady_clock::now();
-  // A wheel turn waits in ImGui's io until a panel frame takes it (the orbit camera reads it
-  // from there too); typing into a field wants every frame.
-  const bool due =
-      g.panel_draws < 3 || g.panel_color.width() != width || g.panel_color.height() != height ||
-      cursor != g.cursor || down || down != g.buttons_down || g.panel_typing || g.panel_input ||
-      ImGui::GetIO().MouseWheel != 0.0f || now - g.panel_drawn > std::chrono::milliseconds(250);
-  g.cursor = cursor;
-  g.buttons_down = down;
-  return due;
-}
-
-void RunnerWindow::drawPanelTexture(int width, int height) {
-  Runner::Gpu& g = *r_.gpu_;
-  if (g.panel_color.width() != width || g.panel_color.height() != height) {
-    g.panel_color = Texture::color(width, height, GL_RGBA8);
-    g.panel_target = std::make_unique<Framebuffer>();
-    g.panel_target->attachColor(g.panel_color);
-    g.panel_target->check();
-  }
-  if (g.panel_over.id() == 0) {
-    g.panel_over =
-        Program(commonShaderDir() / "fullscreen.vert", commonShaderDir() / "panel_over.frag");
-  }
-  g.panel_target->bind();
-  glViewport(0, 0, width, height);
-  glClearColor(0, 0, 0, 0);
-  glClear(GL_COLOR_BUFFER_BIT);
-  const ImDrawData* data = ImGui::GetDrawData();
-  ImGui_ImplOpenGL3_RenderDrawData(const_cast<ImDrawData*>(data));
-  // Where it drew, in framebuffer pixels (ImGui's y points down, GL's up, and a scaled
-  // display has more pixels than window units): the only pixels to lay over the frame.
-  glm::vec2 lo(1e9f), hi(-1e9f);
-  const glm::vec2 origin(data->DisplayPos.x, data->DisplayPos.y);
-  const glm::vec2 scale(data->FramebufferScale.x, data->FramebufferScale.y);
-  for (int l = 0; l < data->CmdListsCount; ++l) {
-    for (const ImDrawVert& v : data->CmdLists[l]->VtxBuffer) {
-      const glm::vec2 p = (glm::vec2(v.pos.x, v.pos.y) - origin) * scale;
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
+// The lesson's title and seeds, then the two answers every lesson gives, where no scrolling
+// hides them: how wrong, and (drawPanelWarnings) what it costs.
+void drawPanelHeadline(const Lesson& lesson, const ErrorMeasure& errors, const RunOptions& options,
+                       const SceneHost& host) {
+  ImGui::TextWrapped("%s", lesson.title().c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", lesson.seeds().c_str());
+  ImGui::PopStyleColor();
+  const ErrorState& error = errors.truth().error();
+  if (options.truth) {
+    if (error.valid && error.metrics.counted_pixels == 0) {
+      ImGui::TextWrapped("error: none counted (%s)", notCountedReason(error.metrics).c_str());
+    } else if (error.valid) {
+      ImGui::TextWrapped("error: false shadow %.2f%%, false lit %.2f%%",
+                         error.metrics.false_shadow_pct, error.metrics.false_lit_pct);
+    } else {
+      ImGui::TextDisabled("error: measuring...");
     }
   }
-  const glm::ivec2 a = glm::clamp(glm::ivec2(glm::floor(lo)), glm::ivec2(0), {width, height});
-  const glm::ivec2 b = glm::clamp(glm::ivec2(glm::ceil(hi)), glm::ivec2(0), {width, height});
-  g.panel_box =
-      b.x > a.x && b.y > a.y ? glm::ivec4(a.x, height - b.y, b.x - a.x, b.y - a.y) : glm::ivec4(0);
-  g.panel_drawn = std::chrono::steady_clock::now();
-  g.panel_typing = ImGui::GetIO().WantTextInput;
-  g.panel_input = false;
-  ++g.panel_draws;
+  // A light map baking (lesson 15): the scene is drawn unbaked until it is in, and the truth
+  // waits for it. Up here, where the sliders do not push it out of sight.
+  if (const BakeState& bake = host.bakeState(); bake.stage == BakeState::Stage::kRunning) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("baking the light map: %.0f%% (drawn unbaked until then)",
+                       100.0 * bake.progress);
+    ImGui::PopStyleColor();
+  }
 }
 
-void RunnerWindow::laySavedPanel(const Frame& frame) {
-  const Runner::Gpu& g = *r_.gpu_;
-  if (g.panel_box.z == 0) return;
-  // Over the whole framebuffer, the panel's column beside the picture included.
-  glBindFramebuffer(GL_FRAMEBUFFER, frame.target);
-  glViewport(0, 0, g.panel_color.width(), g.panel_color.height());
-  glEnable(GL_SCISSOR_TEST);
-  glScissor(g.panel_box.x, g.panel_box.y, g.panel_box.z, g.panel_box.w);
-  glDisable(GL_DEPTH_TEST);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // the texture's colour carries its alpha
-  g.panel_color.bind(0);
-  g.panel_over.set("uPanel", 0);
-  g.panel_over.use();
-  glBindVertexArray(g.empty_vao);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glDisable(GL_SCISSOR_TEST);
-  glDisable(GL_BLEND);
-  glEnable(GL_DEPTH_TEST);
+void drawPanelCost(const Measure& measure, const RunnerWindow& window) {
+  if (!ImGui::CollapsingHeader("Cost", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  ImGui::TextWrapped("%s", window.costSummary().c_str());
+  // One line per pass ever run, so widgets never jump around.
+  const auto& work = measure.lastFrameWork();
+  for (const auto& [pass, ms] : measure.medianPassMs()) {
+    const auto it = work.find(pass);
+    if (it == work.end()) {
+      ImGui::Text("  %-8s skipped this frame", pass.c_str());
+      continue;
+    }
+#ifndef __EMSCRIPTEN__
+    ImGui::Text("  %-8s %6.2f ms %2lld draws", pass.c_str(), ms, it->second.draw_calls);
+#else  // a pass's wall time in a page counts its calls, not its drawing: none is shown
+    ImGui::Text("  %-8s %2lld draws", pass.c_str(), it->second.draw_calls);
+#endif
+    if (it->second.fragment_invocations) {
+      ImGui::TextDisabled("           %lld fragments", *it->second.fragment_invocations);
+    } else {
+      ImGui::TextDisabled("           fragments %s", caps().unavailable().c_str());
+    }
+  }
+  ImGui::TextWrapped("%s", window.counterSummary().c_str());
 }
+
+void drawPanelError(const ErrorMeasure& errors, const RunOptions& options) {
+  if (!haveTruth() && ImGui::CollapsingHeader("Error", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::TextWrapped("%s", truthUnavailable().c_str());
+  }
+  if (!haveTruth() || !options.truth ||
+      !ImGui::CollapsingHeader("Error", ImGuiTreeNodeFlags_DefaultOpen)) {
+    return;
+  }
+  const TruthMeasure& truth = errors.truth();
+  if (truth.running() && errors.progress() >= 0.0) {
+    // A page's worker takes seconds; natively the truth is there before this shows.
+    ImGui::TextDisabled("tracing the truth: %.0f%%", 100.0 * errors.progress());
+  }
+  if (!truth.error().valid) {
+    if (truth.failed() && truth.key() == errors.key()) {
+      ImGui::TextWrapped("the ray tracer failed: the browser's console says why");
+    } else {
+      ImGui::TextDisabled("not measured yet");
+    }
+    return;
+  }
+  const ErrorMetrics& e = truth.error().metrics;
+  if (e.counted_pixels == 0) {
+    ImGui::TextWrapped("No pixel counted: %s (is the eye inside an object?)",
+                       notCountedReason(e).c_str());
+  } else {
+    ImGui::TextWrapped("false shadow %.3f%%  false lit %.3f%%", e.false_shadow_pct,
+                       e.false_lit_pct);
+    ImGui::TextWrapped("vis_mae %.4f  non-finite %lld  counted %lld%s", e.vis_mae,
+                       e.nonfinite_pixels, e.counted_pixels,
+                       truth.key() == errors.key() ? "" : "  (stale: updating)");
+  }
+  if (e.air.valid && !e.air.note.empty()) {
+    ImGui::TextWrapped("air: 0 (%s)", e.air.note.c_str());
+  } else if (e.air.valid && !e.air.rel_rmse_note.empty()) {
+    ImGui::TextWrapped("air: mae %.4f  rel. RMSE: none (%s)", e.air.mae,
+                       e.air.rel_rmse_note.c_str());
+  } else if (e.air.valid) {
+    ImGui::TextWrapped("air: mae %.4f  rel. RMSE %.1f%% (truth mean %.3f, noise %.4f)", e.air.mae,
+                       100.0 * e.air.rel_rmse, e.air.truth_mean, e.air.truth_noise);
+  }
+}
+
+}  // namespace
 
 void Runner::drawPanel(Frame& frame) {
+  beginPanel(frame);
+  // Room for this lesson's longest label (lightmap.texels_per_unit was cut at 8.5 em), the
+  // widgets keeping at least 45 % of the width.
+  float label = ImGui::GetFontSize() * 8.5f;
+  for (const Param& p : params_.all())
+    label = std::max(label, ImGui::CalcTextSize(p.name.c_str()).x);
+  label += ImGui::GetStyle().ItemInnerSpacing.x;
+  ImGui::PushItemWidth(-std::min(label, 0.55f * ImGui::GetContentRegionAvail().x));
+  drawPanelHeadline(*lesson_, errors_, options_, host_);
+  drawExerciseChooser();
+  if (const Exercise* ex = exercise_.chosen(); ex && !window_.exercise_strips) drawExercise(*ex);
+  drawPanelWarnings();
+  drawPanelSliders(frame);
+  drawPanelCost(*measure_, window_);
+  drawPanelError(errors_, options_);
+  ImGui::PopItemWidth();
+  ImGui::End();
+  // The exercise around the picture, in windows of its own beside the panel's column.
+  if (const Exercise* ex = exercise_.chosen(); ex && window_.exercise_strips) drawExercise(*ex);
+}
+
+void Runner::beginPanel(const Frame& frame) {
   const bool column = window_.column > 0;
   if (column) {
     // A window's panel is a column of its own right of the picture, never over it.
@@ -173,58 +160,34 @@ void Runner::drawPanel(Frame& frame) {
       name_.c_str(), nullptr,
       column ? ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse
              : 0);
-  // Room for this lesson's longest label (lightmap.texels_per_unit was cut at 8.5 em), the
-  // widgets keeping at least 45 % of the width.
-  float label = ImGui::GetFontSize() * 8.5f;
-  for (const Param& p : params_.all())
-    label = std::max(label, ImGui::CalcTextSize(p.name.c_str()).x);
-  label += ImGui::GetStyle().ItemInnerSpacing.x;
-  ImGui::PushItemWidth(-std::min(label, 0.55f * ImGui::GetContentRegionAvail().x));
-  ImGui::TextWrapped("%s", lesson_->title().c_str());
-  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-  ImGui::TextWrapped("%s", lesson_->seeds().c_str());
-  ImGui::PopStyleColor();
-  // The two answers every lesson gives, where no scrolling hides them: how wrong, what it costs.
-  const ErrorState& error = errors_.truth().error();
-  if (options_.truth) {
-    if (error.valid && error.metrics.counted_pixels == 0) {
-      ImGui::TextWrapped("error: none counted (%s)", notCountedReason(error.metrics).c_str());
-    } else if (error.valid) {
-      ImGui::TextWrapped("error: false shadow %.2f%%, false lit %.2f%%",
-                         error.metrics.false_shadow_pct, error.metrics.false_lit_pct);
-    } else {
-      ImGui::TextDisabled("error: measuring...");
-    }
-  }
-  // A light map baking (lesson 15): the scene is drawn unbaked until it is in, and the truth
-  // waits for it. Up here, where the sliders do not push it out of sight.
-  if (const BakeState& bake = host_.bakeState(); bake.stage == BakeState::Stage::kRunning) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("baking the light map: %.0f%% (drawn unbaked until then)",
-                       100.0 * bake.progress);
-    ImGui::PopStyleColor();
-  }
-  // The lesson's exercises, one a choice: its goal, each figure now, met or not, on the last
-  // truth measured, under the error it is judged by.
-  if (const std::vector<Exercise> all = lesson_->exercises(); !all.empty() && options_.truth) {
-    std::vector<std::string> names = {"no exercise: explore freely"};
-    for (size_t i = 0; i < all.size(); ++i)
-      names.push_back("exercise " + std::to_string(i + 1) + ": " + all[i].title);
-    const int shown = std::clamp(options_.exercise, 0, static_cast<int>(all.size()));
-    // The whole width, its name in the choices: a title cut at the labels' column read
-    // "1: Just enough map for th".
-    ImGui::SetNextItemWidth(-FLT_MIN);
-    if (ImGui::BeginCombo("##exercise", names[static_cast<size_t>(shown)].c_str())) {
-      for (int k = 0; k < static_cast<int>(names.size()); ++k) {
-        if (ImGui::Selectable(names[static_cast<size_t>(k)].c_str(), k == shown) && k != shown) {
-          exercise_.choose(k);
-        }
+}
+
+// The lesson's exercises, one a choice: its goal, each figure now, met or not, on the last
+// truth measured, under the error it is judged by.
+void Runner::drawExerciseChooser() {
+  const std::vector<Exercise> all = lesson_->exercises();
+  if (all.empty() || !options_.truth) return;
+  std::vector<std::string> names = {"no exercise: explore freely"};
+  for (size_t i = 0; i < all.size(); ++i)
+    names.push_back("exercise " + std::to_string(i + 1) + ": " + all[i].title);
+  const int shown = std::clamp(exercise_.number(), 0, static_cast<int>(all.size()));
+  // The whole width, its name in the choices: a title cut at the labels' column read
+  // "1: Just enough map for th".
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  if (ImGui::BeginCombo("##exercise", names[static_cast<size_t>(shown)].c_str())) {
+    for (int k = 0; k < static_cast<int>(names.size()); ++k) {
+      if (ImGui::Selectable(names[static_cast<size_t>(k)].c_str(), k == shown) && k != shown) {
+        chooseExercise(k);
       }
-      ImGui::EndCombo();
     }
+    ImGui::EndCombo();
   }
-  if (const Exercise* ex = exercise_.chosen(); ex && !window_.exercise_strips) drawExercise(*ex);
-  // Where no technique's answer is defined, the panel says so before its numbers.
+}
+
+// Where no technique's answer is defined, the panel says so before its numbers; then the
+// texels per pixel and the shadow's cost.
+void Runner::drawPanelWarnings() {
+  const ErrorState& error = errors_.truth().error();
   ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.2f, 1.0f));
   if (const std::string on = lightOnSurface(); !on.empty()) {
     ImGui::TextWrapped(
@@ -248,7 +211,13 @@ void Runner::drawPanel(Frame& frame) {
   if (const double overhead = baseline_.overhead(); overhead > 0.0) {
     ImGui::Text("cost: %.2fx the frame without shadow", overhead);
   }
-  params_.drawWidgets([](const Param& p) { return p.name == "view" || p.name == "scene"; });
+}
+
+// The view and scene, the buttons, then the lesson's own idea first and open; what every
+// lesson shares folded below it.
+void Runner::drawPanelSliders(Frame& frame) {
+  const auto top = [](const Param& p) { return p.name == "view" || p.name == "scene"; };
+  params_.drawWidgets(top);
   if (ImGui::Button("Screenshot (F12)")) window_.screenshot_requested = true;
   // An eye dragged out of the room or out of sight comes back (the C key too); not where an
   // exercise holds the camera.
@@ -257,13 +226,10 @@ void Runner::drawPanel(Frame& frame) {
   ImGui::BeginDisabled(held != nullptr && !held->camera_free);
   if (ImGui::Button("Camera back (C)")) resetCamera();
   ImGui::EndDisabled();
-  if (!window_.screenshot_said.empty()) {
+  if (!headless_.screenshotSaid().empty()) {
     ImGui::SameLine();
-    ImGui::TextWrapped("%s", window_.screenshot_said.c_str());
+    ImGui::TextWrapped("%s", headless_.screenshotSaid().c_str());
   }
-
-  // The lesson's own idea first and open; what every lesson shares folded below it.
-  const auto top = [](const Param& p) { return p.name == "view" || p.name == "scene"; };
   const auto lightOrCamera = [](const Param& p) {
     return p.name.rfind("light.", 0) == 0 || p.name.rfind("camera.", 0) == 0;
   };
@@ -288,69 +254,6 @@ void Runner::drawPanel(Frame& frame) {
   if (section("Light and camera", false)) {
     params_.drawWidgets([&](const Param& p) { return p.shared && lightOrCamera(p); });
   }
-  if (ImGui::CollapsingHeader("Cost", ImGuiTreeNodeFlags_DefaultOpen)) {
-    ImGui::TextWrapped("%s", window_.costSummary().c_str());
-    // One line per pass ever run, so widgets never jump around.
-    const auto& work = measure_->lastFrameWork();
-    for (const auto& [pass, ms] : measure_->medianPassMs()) {
-      const auto it = work.find(pass);
-      if (it == work.end()) {
-        ImGui::Text("  %-8s skipped this frame", pass.c_str());
-      } else {
-#ifndef __EMSCRIPTEN__
-        ImGui::Text("  %-8s %6.2f ms %2lld draws", pass.c_str(), ms, it->second.draw_calls);
-#else  // a pass's wall time in a page counts its calls, not its drawing: none is shown
-        ImGui::Text("  %-8s %2lld draws", pass.c_str(), it->second.draw_calls);
-#endif
-        if (it->second.fragment_invocations) {
-          ImGui::TextDisabled("           %lld fragments", *it->second.fragment_invocations);
-        } else {
-          ImGui::TextDisabled("           fragments %s", caps().unavailable().c_str());
-        }
-      }
-    }
-    ImGui::TextWrapped("%s", window_.counterSummary().c_str());
-  }
-  if (!haveTruth() && ImGui::CollapsingHeader("Error", ImGuiTreeNodeFlags_DefaultOpen)) {
-    ImGui::TextWrapped("%s", truthUnavailable().c_str());
-  }
-  if (haveTruth() && options_.truth &&
-      ImGui::CollapsingHeader("Error", ImGuiTreeNodeFlags_DefaultOpen)) {
-    if (errors_.truth().running() && errors_.progress() >= 0.0) {
-      // A page's worker takes seconds; natively the truth is there before this shows.
-      ImGui::TextDisabled("tracing the truth: %.0f%%", 100.0 * errors_.progress());
-    }
-    if (errors_.truth().error().valid) {
-      const ErrorMetrics& e = errors_.truth().error().metrics;
-      if (e.counted_pixels == 0) {
-        ImGui::TextWrapped("No pixel counted: %s (is the eye inside an object?)",
-                           notCountedReason(e).c_str());
-      } else {
-        ImGui::TextWrapped("false shadow %.3f%%  false lit %.3f%%", e.false_shadow_pct,
-                           e.false_lit_pct);
-        ImGui::TextWrapped("vis_mae %.4f  non-finite %lld  counted %lld%s", e.vis_mae,
-                           e.nonfinite_pixels, e.counted_pixels,
-                           errors_.truth().key() == errors_.key() ? "" : "  (stale: updating)");
-      }
-      if (e.air.valid && !e.air.note.empty()) {
-        ImGui::TextWrapped("air: 0 (%s)", e.air.note.c_str());
-      } else if (e.air.valid && !e.air.rel_rmse_note.empty()) {
-        ImGui::TextWrapped("air: mae %.4f  rel. RMSE: none (%s)", e.air.mae,
-                           e.air.rel_rmse_note.c_str());
-      } else if (e.air.valid) {
-        ImGui::TextWrapped("air: mae %.4f  rel. RMSE %.1f%% (truth mean %.3f, noise %.4f)",
-                           e.air.mae, 100.0 * e.air.rel_rmse, e.air.truth_mean, e.air.truth_noise);
-      }
-    } else if (errors_.truth().failed() && errors_.truth().key() == errors_.key()) {
-      ImGui::TextWrapped("the ray tracer failed: the browser's console says why");
-    } else {
-      ImGui::TextDisabled("not measured yet");
-    }
-  }
-  ImGui::PopItemWidth();
-  ImGui::End();
-  // The exercise around the picture, in windows of its own beside the panel's column.
-  if (const Exercise* ex = exercise_.chosen(); ex && window_.exercise_strips) drawExercise(*ex);
 }
 
 void Runner::drawExercise(const Exercise& ex) {
@@ -382,7 +285,7 @@ void Runner::drawExercise(const Exercise& ex) {
     ImGui::Separator();
   }
   ImGui::PushID("exercise");
-  ImGui::TextWrapped("Exercise %d: %s", options_.exercise, ex.title.c_str());
+  ImGui::TextWrapped("Exercise %d: %s", exercise_.number(), ex.title.c_str());
   ImGui::TextWrapped("%s", ex.goal.c_str());
   if (!strips && (options_.width != kExerciseWidth || options_.height != kExerciseHeight)) {
     ImGui::TextDisabled("(judged on a %dx%d picture, as --grade is; this one is %dx%d)",
@@ -408,11 +311,11 @@ void Runner::drawExercise(const Exercise& ex) {
   // The submission: a file --grade reads back (--settings), named after the lesson.
   if (ImGui::Button("Save settings")) {
     const std::string file =
-        name_ + "_exercise" + std::to_string(options_.exercise) + "_settings.txt";
+        name_ + "_exercise" + std::to_string(exercise_.number()) + "_settings.txt";
     const std::string problem = exercise_.save(file);
     window_.saved = problem.empty()
                         ? "saved " + file + ": hand it in, or grade it: " + name_ + " --grade " +
-                              std::to_string(options_.exercise) + " --settings " + file
+                              std::to_string(exercise_.number()) + " --settings " + file
                         : problem;
   }
   if (!window_.saved.empty()) ImGui::TextWrapped("%s", window_.saved.c_str());

@@ -1,9 +1,6 @@
 #include "run/runner.hpp"
 
-#include "run/runner_gpu.hpp"
-
 #include "core/json.hpp"
-#include "gl/context.hpp"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -73,6 +70,7 @@ Runner::Runner(const std::string& lessonName, std::unique_ptr<Lesson> lesson, Ru
                     "truth, or the error against it");
   lesson_->declare(params_);
   exercise_.pick(options_.exercise);
+  errors_.onMeasured([this] { judgeExercise(); });
   declareShared();
   loadScene();
 }
@@ -146,10 +144,6 @@ void Runner::loadScene() {
   params_.setDefaultFloat(params_.at("camera.fov"), scene.camera.fov);
   params_.consume(kDirtyScene);
   errors_.truth().forgetTracer();
-  if (gpu_) {
-    gpu_->meshes.clear();
-    for (const auto& object : scene.objects) gpu_->meshes.emplace_back(object.mesh);
-  }
 }
 
 void Runner::resetCamera() {
@@ -213,8 +207,7 @@ std::string Runner::lightOnSurface() const {
 }
 
 void Runner::initHeadless() {
-  gpu_ = std::make_unique<Gpu>();
-  gpu_->context = createHeadlessContext(
+  context_ = createHeadlessContext(
       options_.backend.empty() ? headlessBackends().front() : options_.backend, options_.device);
   initGl();
   if (options_.panel) {
@@ -224,7 +217,8 @@ void Runner::initHeadless() {
   }
 }
 
-void Runner::initImGuiGl() {
+void Runner::initImGuiGl(bool glfw) {
+  imgui_glfw_ = glfw;
   ImGui_ImplOpenGL3_Init(caps().es ? "#version 300 es" : "#version 330 core");
   // The font atlas read NEAREST: its glyphs land on whole pixels, so the panel looks the same
   // (headless panel pictures byte-identical) and costs a quarter less to draw on llvmpipe.
@@ -234,16 +228,28 @@ void Runner::initImGuiGl() {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glBindTexture(GL_TEXTURE_2D, 0);
-  gpu_->imgui = true;
+  imgui_ = true;
 }
 
 void Runner::releaseGl() {
-  // GL objects go while their context is still there: the lesson's, the timers', then the
-  // runner's own, the context last (Gpu declares it first, so it is destroyed last).
+  // GL objects go while their context is still there: the lesson's, the timers', the
+  // pieces', ImGui's, then the context.
   lesson_.reset();
   measure_.reset();
   baseline_.release();
-  gpu_.reset();
+  texels_.releaseGl();
+  errors_.releaseGl();
+  host_.releaseGl();
+  headless_.target().release();
+  floats_.release();
+  window_.releaseGl();
+  if (imgui_) {
+    ImGui_ImplOpenGL3_Shutdown();
+    if (imgui_glfw_) ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    imgui_ = imgui_glfw_ = false;
+  }
+  context_.reset();
 }
 
 void Runner::initGl() {
@@ -251,18 +257,20 @@ void Runner::initGl() {
   GlErrorLog::reset();
   measure_ = std::make_unique<Measure>();
   baseline_.init();
-  const auto dir = commonShaderDir();
-  gpu_->gbuffer = Program(dir / "gbuffer.vert", dir / "gbuffer.frag");
-  gpu_->image = Program(dir / "fullscreen.vert", dir / "image.frag");
-  gpu_->depth_inset = Program(dir / "fullscreen.vert", dir / "depth_inset.frag");
-  gpu_->texel_heatmap =
-      Program(dir / "shadow_coord.vert", dir / "texel_density.frag", {"TEXEL_HEATMAP 1"});
-  gpu_->texel_raw =
-      Program(dir / "shadow_coord.vert", dir / "texel_density.frag", {"TEXEL_HEATMAP 0"});
-  glGenVertexArrays(1, &gpu_->empty_vao);
-  for (const auto& object : scene().objects) gpu_->meshes.emplace_back(object.mesh);
-  gpu_->ensureTargets(options_.width, options_.height);
+  errors_.initGl();
+  host_.initGl();
+  texels_.initGl();
+  headless_.target().ensure(options_.width, options_.height);
   lesson_->init();
+}
+
+void Runner::resizePicture(int width, int height) {
+  options_.width = width, options_.height = height;
+  headless_.target().ensure(width, height);  // the frames without shadow draw there
+}
+
+bool Runner::panelShown() const {
+  return imgui_ && (window_.is_open ? !window_.panelHidden() : options_.panel);
 }
 
 void Runner::setMouse(glm::vec2 position, bool leftDown) {
@@ -275,20 +283,23 @@ int Runner::glErrors() const {
 }
 
 void Runner::renderFrame(bool timed) {
-  const GLuint target = window_.is_open ? 0 : gpu_->target->id();
+  const GLuint target = window_.is_open ? 0 : headless_.target().id();
   // In a window options_ holds the picture's size: the framebuffer less the panel's column.
   const int w = options_.width, h = options_.height;
-  const bool panel = gpu_->imgui && (window_.is_open || options_.panel);
-  renderInto(target, w, h, currentView(), timed, panel);
+  const bool panel = imgui_ && (window_.is_open || options_.panel);
+  render({target, w, h, currentView(), timed, panel});
   GlErrorLog::poll();
 }
 
-void Runner::renderInto(GLuint target, int width, int height, View view, bool timed,
-                        bool withPanel) {
-  measure_->setEnabled(timed);
+FrameOutputs Runner::render(const FrameRequest& request) {
+  const GLuint target = request.target;
+  const int width = request.width, height = request.height;
+  const bool withPanel = request.panel;
+  Measure& measure = request.measure != nullptr ? *request.measure : *measure_;
+  measure.setEnabled(request.timed);
   if (params_.consume(kDirtyScene)) loadScene();
   Light light;
-  Frame frame(host_, params_, host_.scene(), *measure_, light);
+  Frame frame(host_, params_, host_.scene(), measure, light);
   // The light and camera as the parameters say now; again after the panel, whose widgets
   // may move them this very frame (the lesson must draw with what its map is built for).
   const auto readParams = [&] {
@@ -301,7 +312,7 @@ void Runner::renderInto(GLuint target, int width, int height, View view, bool ti
   frame.width = width;
   frame.height = height;
   frame.target = target;
-  frame.shown = view;
+  frame.shown = request.view;
   frame.input_moving = input_moving_;
 
   // In a window the panel is drawn anew only when it may have changed (input, or every
@@ -315,17 +326,7 @@ void Runner::renderInto(GLuint target, int width, int height, View view, bool ti
       withPanel &&
       (!window_.is_open || (!baseline_.running() && window_.panelDue(panel_size.x, panel_size.y)));
   if (draw_panel) {
-    ImGuiIO& io = ImGui::GetIO();
-    if (!window_.is_open) {
-      io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
-      io.DeltaTime = 1.0f / 60.0f;
-      io.MousePos = ImVec2(window_.mouse.x, window_.mouse.y);
-      io.MouseDown[0] = window_.mouse_down;
-    } else {
-      ImGui_ImplGlfw_NewFrame();
-    }
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui::NewFrame();
+    newPanelFrame(width, height);
     drawPanel(frame);
     ImGui::Render();
     // A widget may have changed the scene, the light, the camera or the view this frame.
@@ -334,50 +335,77 @@ void Runner::renderInto(GLuint target, int width, int height, View view, bool ti
     frame.shown = currentView();
   }
 
-  measure_->beginFrame();
+  FrameOutputs told;  // none where the lesson draws nothing (the truth's views)
+  measure.beginFrame();
   frame.bindTarget();
   resetGlState();  // every lesson starts from the same GL state
   if (frame.shows(views::kTruth) || frame.shows(views::kError)) {
-    measure_->setEnabled(false);
-#ifndef __EMSCRIPTEN__
-    measureError();
-#else
-    // A page cannot wait seconds for the rays: it shows the last truth measured while its Web
-    // Worker traces the current one, which the window loop starts once the sliders rest (here
-    // instead when the page measures no error otherwise, ?no-truth).
-    if (!options_.truth && errors_.truth().key() != errors_.key()) errors_.begin();
-#endif
-    measure_->setEnabled(timed);
-    const Image& shown =
-        frame.shows(views::kTruth) ? errors_.truth().truthImage() : errors_.truth().errorImage();
-    if (!haveTruth() || shown.rgba.empty())
-      frame.clearTarget(Frame::kNoTruthColor);  // a plain picture; the panel says why
-    showImage(frame, shown);
+    showTruth(frame, request.timed);
   } else {
-    // The texel views are the runner's, drawn over the lesson's shaded frame, whose map
-    // they measure: `aliasing` (offered by map lessons) and `texels` (texels_.measure()).
-    const bool texels = frame.shows(views::kAliasing) || frame.shows(views::kTexels);
-    const View texel_view = frame.shown;
-    if (texels) frame.shown = views::kShaded;
-    ProgramVariants::takeUsed();  // only this frame's
-    lesson_->render(frame);
-    measure_->variants(ProgramVariants::takeUsed());
-    told_ = {frame.light_view_projection, frame.light_reach, frame.truth_area_radius, frame.medium,
-             frame.shadow_sampling};
-    if (texels) {
-      frame.shown = texel_view;
-      texels_.draw(frame, texel_view == views::kAliasing);
-    }
+    told = renderLesson(frame);
   }
   if (withPanel && !window_.is_open) {
     frame.bindTarget();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   } else if (withPanel) {
     if (draw_panel) window_.drawPanelTexture(panel_size.x, panel_size.y);
-    window_.laySavedPanel(frame);
+    window_.laySavedPanel(frame, host_);
   }
-  measure_->endFrame();
-  measure_->setEnabled(true);
+  measure.endFrame();
+  measure.setEnabled(true);
+  return told;
+}
+
+// A headless panel's ImGui frame takes its size and mouse from the runner (a test's); a
+// window's from GLFW.
+void Runner::newPanelFrame(int width, int height) {
+  ImGuiIO& io = ImGui::GetIO();
+  if (!window_.is_open) {
+    io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
+    io.DeltaTime = 1.0f / 60.0f;
+    io.MousePos = ImVec2(window_.mouse.x, window_.mouse.y);
+    io.MouseDown[0] = window_.mouse_down;
+  } else {
+    ImGui_ImplGlfw_NewFrame();
+  }
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui::NewFrame();
+}
+
+// The runner's own views: the truth, or the error against it, as a picture over the frame.
+void Runner::showTruth(Frame& frame, bool timed) {
+  frame.measure.setEnabled(false);
+#ifndef __EMSCRIPTEN__
+  measureError();
+#else
+  // A page cannot wait seconds for the rays: it shows the last truth measured while its Web
+  // Worker traces the current one, which the window loop starts once the sliders rest (here
+  // instead when the page measures no error otherwise, ?no-truth).
+  if (!options_.truth && errors_.truth().key() != errors_.key()) errors_.begin();
+#endif
+  frame.measure.setEnabled(timed);
+  const Image& shown =
+      frame.shows(views::kTruth) ? errors_.truth().truthImage() : errors_.truth().errorImage();
+  if (!haveTruth() || shown.rgba.empty())
+    frame.clearTarget(Frame::kNoTruthColor);  // a plain picture; the panel says why
+  host_.showImage(frame, shown);
+}
+
+FrameOutputs Runner::renderLesson(Frame& frame) {
+  // The texel views are the runner's, drawn over the lesson's shaded frame, whose map
+  // they measure: `aliasing` (offered by map lessons) and `texels` (texels_.measure()).
+  const bool texels = frame.shows(views::kAliasing) || frame.shows(views::kTexels);
+  const View texel_view = frame.shown;
+  if (texels) frame.shown = views::kShaded;
+  ProgramVariants::takeUsed();  // only this frame's
+  lesson_->render(frame);
+  frame.measure.variants(ProgramVariants::takeUsed());
+  if (texels) {
+    frame.shown = texel_view;
+    texels_.draw(frame, texel_view == views::kAliasing);
+  }
+  return {frame.light_view_projection, frame.light_reach, frame.truth_area_radius, frame.medium,
+          frame.shadow_sampling};
 }
 
 glm::mat4 Runner::cameraView() const {
@@ -390,38 +418,13 @@ glm::mat4 Runner::cameraProjection(int width, int height) const {
                           scene().eyeFar(params_.at("camera.pos").v()));
 }
 
-void Runner::showImage(const Frame& frame, const Image& image) {
-  if (image.width == 0) return;
-  if (gpu_->shown.width() != image.width || gpu_->shown.height() != image.height) {
-    gpu_->shown = Texture::color(image.width, image.height, GL_RGBA8);
-  }
-  glBindTexture(GL_TEXTURE_2D, gpu_->shown.id());
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
-                  image.rgba.data());
-  frame.drawImageInset(gpu_->shown, /*fullscreen=*/true);
-}
-
-void Runner::resetGlState() {
-  PassState{}.apply();
-#if !SHADOWS_GLES
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-#endif
-}
-
 std::string Runner::screenshot() {
-  headless_.saveScreenshot(options_.width, options_.height);
-  return window_.screenshot_said;
+  headless_.saveScreenshot(options_.width, options_.height, window_.is_open);
+  return headless_.screenshotSaid();
 }
 
 Image Runner::readImage() const {
-  const int w = options_.width, h = options_.height;
-  Image image{w, h, std::vector<std::uint8_t>(static_cast<size_t>(w) * h * 4)};
-  glBindFramebuffer(GL_FRAMEBUFFER, gpu_->target->id());
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-  return image;
+  return headless_.target().read(options_.width, options_.height);
 }
 
 }  // namespace shadows

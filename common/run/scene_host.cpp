@@ -4,8 +4,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "run/runner.hpp"
-#include "run/runner_gpu.hpp"
+#include "run/truth_measure.hpp"
 
 namespace shadows {
 
@@ -13,10 +12,50 @@ void SceneHost::load(Scene scene) {
   scene_ = std::move(scene);
   preset_models_.clear();
   for (const auto& object : scene_.objects) preset_models_.push_back(object.model);
+  if (!gl_) return;
+  meshes_.clear();
+  for (const auto& object : scene_.objects) meshes_.emplace_back(object.mesh);
+}
+
+void SceneHost::initGl() {
+  const auto dir = commonShaderDir();
+  image_ = Program(dir / "fullscreen.vert", dir / "image.frag");
+  depth_inset_ = Program(dir / "fullscreen.vert", dir / "depth_inset.frag");
+  glGenVertexArrays(1, &empty_vao_);
+  gl_ = true;
+  meshes_.clear();
+  for (const auto& object : scene_.objects) meshes_.emplace_back(object.mesh);
+}
+
+void SceneHost::releaseGl() {
+  meshes_.clear();
+  image_ = Program();
+  depth_inset_ = Program();
+  shown_ = Texture();
+  if (empty_vao_ != 0) glDeleteVertexArrays(1, &empty_vao_);
+  empty_vao_ = 0;
+  gl_ = false;
+}
+
+void SceneHost::showImage(const Frame& frame, const Image& image) {
+  if (image.width == 0) return;
+  if (shown_.width() != image.width || shown_.height() != image.height) {
+    shown_ = Texture::color(image.width, image.height, GL_RGBA8);
+  }
+  glBindTexture(GL_TEXTURE_2D, shown_.id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                  image.rgba.data());
+  frame.drawImageInset(shown_, /*fullscreen=*/true);
+}
+
+void SceneHost::drawCovering() const {
+  glBindVertexArray(empty_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 const ErrorState& SceneHost::lastError() const {
-  return r_.errors_.truth().error();
+  return truth_.error();
 }
 
 void SceneHost::drawFullscreen(const Frame& frame, const Program& program, bool inset) const {
@@ -25,7 +64,7 @@ void SceneHost::drawFullscreen(const Frame& frame, const Program& program, bool 
   if (inset) glViewport(frame.width - side - 8, 8, side, side);
   glDisable(GL_DEPTH_TEST);
   program.use();
-  glBindVertexArray(r_.gpu_->empty_vao);
+  glBindVertexArray(empty_vao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   countDrawCall();
   glEnable(GL_DEPTH_TEST);
@@ -39,11 +78,11 @@ void SceneHost::drawImageInset(const Frame& frame, const Texture& image, bool fu
   if (!fullscreen) glViewport(frame.width - wide - 8, 8, wide, side);
   glDisable(GL_DEPTH_TEST);
   image.bind(0);
-  r_.gpu_->image.use();
-  r_.gpu_->image.set("uImage", 0);
-  r_.gpu_->image.set("uHasBorder", image.border() ? 1 : 0);
-  r_.gpu_->image.set("uBorder", image.border().value_or(glm::vec4(0.0f)));
-  r_.gpu_->image.set("uLinear", image.filter() == GL_LINEAR ? 1 : 0);
+  image_.use();
+  image_.set("uImage", 0);
+  image_.set("uHasBorder", image.border() ? 1 : 0);
+  image_.set("uBorder", image.border().value_or(glm::vec4(0.0f)));
+  image_.set("uLinear", image.filter() == GL_LINEAR ? 1 : 0);
   // The texture's swizzle, where the GL did not apply it: output channel i reads source
   // channel swizzle[i] (column j of the matrix is source channel j), or the constant 0 or 1.
   glm::mat4 swizzle(1.0f);
@@ -72,9 +111,9 @@ void SceneHost::drawImageInset(const Frame& frame, const Texture& image, bool fu
       }
     }
   }
-  r_.gpu_->image.set("uSwizzle", swizzle);
-  r_.gpu_->image.set("uSwizzleConstant", constant);
-  glBindVertexArray(r_.gpu_->empty_vao);
+  image_.set("uSwizzle", swizzle);
+  image_.set("uSwizzleConstant", constant);
+  glBindVertexArray(empty_vao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   countDrawCall();
   glEnable(GL_DEPTH_TEST);
@@ -141,23 +180,19 @@ void SceneHost::drawObject(const Program& program, size_t index) const {
   program.set("uNormalMatrix", glm::transpose(glm::inverse(object.model)));
   program.set("uColor", object.color);
   program.set("uObject", static_cast<int>(index));
-  r_.gpu_->meshes[index].draw();
+  meshes_[index].draw();
 }
 
 void SceneHost::setObjectModel(size_t index, const glm::mat4& model) {
   SceneObject& object = scene_.objects.at(index);
   if (object.model == model) return;
   object.model = model;
-  r_.errors_.truth().forgetScene();       // the truth's triangles are in world space
-  r_.params_.markDirty(kDirtyShadowMap);  // a moved caster moves its shadow
+  truth_.forgetScene();                // the truth's triangles are in world space
+  params_.markDirty(kDirtyShadowMap);  // a moved caster moves its shadow
 }
 
 void SceneHost::bake(BakeRequest request) {
-  // A window that runs until closed bakes on a thread; anything that writes what it rendered
-  // (headless, a window's --frames run) waits for the light map first.
-  const bool interactive = !r_.options_.headless && r_.gpu_ && r_.gpu_->window != nullptr &&
-                           r_.gpu_->loop.frames_left < 0;
-  baker_.start(std::move(request), /*wait=*/!interactive);
+  baker_.start(std::move(request), /*wait=*/!bake_in_background_);
 }
 
 void SceneHost::drawInset(const Frame& frame, const Texture& depth, float near, float far,
@@ -172,12 +207,12 @@ void SceneHost::drawInset(const Frame& frame, const Texture& depth, float near, 
   glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, &compare_mode);
   depth.setCompare(false);
   depth.bind(0);
-  r_.gpu_->depth_inset.use();
-  r_.gpu_->depth_inset.set("uDepth", 0);
-  r_.gpu_->depth_inset.set("uNear", near);
-  r_.gpu_->depth_inset.set("uFar", far);
-  r_.gpu_->depth_inset.set("uPerspective", perspective ? 1 : 0);
-  glBindVertexArray(r_.gpu_->empty_vao);
+  depth_inset_.use();
+  depth_inset_.set("uDepth", 0);
+  depth_inset_.set("uNear", near);
+  depth_inset_.set("uFar", far);
+  depth_inset_.set("uPerspective", perspective ? 1 : 0);
+  glBindVertexArray(empty_vao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   countDrawCall();
   depth.setCompare(compare_mode == GL_COMPARE_REF_TO_TEXTURE);

@@ -1,24 +1,38 @@
 // The scene a lesson draws and the runner's half of Frame's draw helpers (LessonHost): the
-// scene's meshes, the insets and full-screen passes, one object's placement, the last error.
-// The runner owns one; every Frame it builds draws through it.
+// scene's meshes, the insets and full-screen passes and their programs, one object's
+// placement, the last error, the light-map bake. The runner owns one; every Frame it builds
+// draws through it.
 #pragma once
 
 #include <vector>
 
+#include "core/image.hpp"
 #include "core/scene.hpp"
 #include "lesson/lesson.hpp"
 #include "run/light_map_bake.hpp"
 
 namespace shadows {
 
-class Runner;
+class TruthMeasure;
 
 class SceneHost final : public LessonHost {
  public:
-  explicit SceneHost(Runner& runner) : r_(runner) {}
+  // `params`: a moved object dirties the map; `truth`: its last error, its scene forgotten.
+  SceneHost(Params& params, TruthMeasure& truth) : params_(params), truth_(truth) {}
   const Scene& scene() const { return scene_; }
-  // A scene preset: its objects, and their matrices as presetModel's answers.
+  // A scene preset: its objects, and their matrices as presetModel's answers (its meshes
+  // uploaded too, once the GL is up).
   void load(Scene scene);
+  // The meshes and the programs of the insets, once a context is current; released before it.
+  void initGl();
+  void releaseGl();
+  // A CPU picture (the truth, the error) over the whole frame.
+  void showImage(const Frame& frame, const Image& image);
+  // The one triangle over the viewport, with no vertex data (the panel's texture laid over).
+  void drawCovering() const;
+  // A light map is baked on a thread while a window runs until closed; anything that writes
+  // what it rendered (headless, a window's --frames run) waits for it.
+  void setBakeInBackground(bool background) { bake_in_background_ = background; }
 
   const ErrorState& lastError() const override;
   void setObjectModel(size_t index, const glm::mat4& model) override;
@@ -36,10 +50,17 @@ class SceneHost final : public LessonHost {
   void drawImageInset(const Frame& frame, const Texture& image, bool fullscreen) const override;
   void drawFullscreen(const Frame& frame, const Program& program, bool inset) const override;
 
-  Runner& r_;
+  Params& params_;
+  TruthMeasure& truth_;
   Scene scene_;
   std::vector<glm::mat4> preset_models_;
   mutable LightMapBaker baker_;  // polled where its state is asked for
+  bool bake_in_background_ = false;
+  bool gl_ = false;  // initGl has run
+  std::vector<Mesh> meshes_;
+  Program image_, depth_inset_;
+  Texture shown_;  // the CPU picture showImage uploads
+  GLuint empty_vao_ = 0;
 };
 
 }  // namespace shadows

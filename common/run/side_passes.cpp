@@ -1,7 +1,7 @@
 #include "run/side_passes.hpp"
 
-#include "run/runner.hpp"
-#include "run/runner_gpu.hpp"
+#include "run/error_measure.hpp"
+#include "run/run_options.hpp"
 
 #include <imgui.h>
 
@@ -12,65 +12,69 @@
 namespace shadows {
 
 void BaselineFrames::render() {
-  Runner& r = r_;
-  Param* off = r.params_.find("shadow.off");
-  const View view = r.currentView();
+  Param* off = params_.find("shadow.off");
+  const View view = frames_.currentView();
   if (off == nullptr || off->b() || view == views::kTruth || view == views::kError) return;
-  const int w = r.options_.width, h = r.options_.height;  // the picture's, as renderFrame's
-  r.gpu_->ensureTargets(w, h);
-  // What the lesson's frame told the runner, and what it has still to do (a dirty map must
-  // still be rendered by the next real frame), survive the baseline frame, exception or not.
-  // A scene reload it has done is not done again.
+  const int w = options_.width, h = options_.height;  // the picture's, as renderFrame's
+  target_.ensure(w, h);
+  // What the lesson's frame has still to do (a dirty map must still be rendered by the next
+  // real frame) survives the baseline frame, exception or not. A scene reload it has done is
+  // not done again.
   struct Restore {
     BaselineFrames& b;
     Param& off;
     std::uint32_t dirty;
-    FrameOutputs told;
     ~Restore() {
       off.value[0] = 0.0;
-      std::swap(b.r_.measure_, b.measure_);
       b.running_ = false;
-      b.r_.params_.markDirty(dirty & ~kDirtyScene);
-      b.r_.told_ = told;
+      b.params_.markDirty(dirty & ~kDirtyScene);
     }
-  } restore{*this, *off, r.params_.dirty(), r.told_};
-  std::swap(r.measure_, measure_);
+  } restore{*this, *off, params_.dirty()};
   running_ = true;
   off->value[0] = 1.0;  // not through Params::set: nothing is dirtied
   // The first one compiles the unshadowed variants: not timed. The panel, if shown, is laid
   // over it as over the lesson's frames (never drawn anew: it takes no input here).
-  const bool panel =
-      r.gpu_->imgui && (r.window_.is_open ? !r.options_.hide_panel : r.options_.panel);
-  r.renderInto(r.gpu_->target->id(), w, h, view, /*timed=*/frames_++ > 0, panel);
+  frames_.render({target_.id(), w, h, view, /*timed=*/frames_drawn_++ > 0, frames_.panelShown(),
+                  measure_.get()});
 }
 
 double BaselineFrames::overhead() const {
   const double base = measure_ ? measure_->medianFrameMs() : 0.0;
-  return base > 0.0 ? r_.measure_->medianFrameMs() / base : 0.0;
+  return base > 0.0 ? frames_.lessonMeasure().medianFrameMs() / base : 0.0;
 }
 
 std::optional<double> BaselineFrames::measuredOverhead() const {
-  if (timedFrames() < kFramesForRatio || r_.measure_->timedFrames() < kFramesForRatio) {
+  if (timedFrames() < kFramesForRatio || frames_.lessonMeasure().timedFrames() < kFramesForRatio) {
     return std::nullopt;
   }
   const double ratio = overhead();
   return ratio > 0.0 ? std::optional<double>(ratio) : std::nullopt;
 }
 
+void TexelPass::initGl() {
+  const auto dir = commonShaderDir();
+  heatmap_ = Program(dir / "shadow_coord.vert", dir / "texel_density.frag", {"TEXEL_HEATMAP 1"});
+  raw_ = Program(dir / "shadow_coord.vert", dir / "texel_density.frag", {"TEXEL_HEATMAP 0"});
+}
+
+void TexelPass::releaseGl() {
+  heatmap_ = Program();
+  raw_ = Program();
+  measure_.reset();
+}
+
 const std::vector<TexelPixel>* TexelPass::measure() {
-  Runner& r = r_;
-  std::string key = r.errors().key();
+  std::string key = pictureKey(options_, params_, host_);
   if (key != key_) {
-    const int w = r.options_.width, h = r.options_.height;
-    r.gpu_->ensureFloatTargets(w, h);
-    const GLuint fbo = r.gpu_->float_target->id();
+    const int w = options_.width, h = options_.height;
+    floats_.ensure(w, h);
+    const GLuint fbo = floats_.id();
     if (!measure_) measure_ = std::make_unique<Measure>();
-    std::swap(r.measure_, measure_);
-    r.renderInto(fbo, w, h, views::kTexels, /*timed=*/true, false);
-    std::swap(r.measure_, measure_);
+    const FrameOutputs told =
+        frames_.render({fbo, w, h, views::kTexels, /*timed=*/true, false, measure_.get()});
     pixels_.clear();
     stats_.reset();
-    if (r.told_.shadow_sampling) {
+    if (told.shadow_sampling) {
       pixels_.resize(static_cast<size_t>(w) * h);
       glBindFramebuffer(GL_FRAMEBUFFER, fbo);
       glReadBuffer(GL_COLOR_ATTACHMENT0);
@@ -83,13 +87,13 @@ const std::vector<TexelPixel>* TexelPass::measure() {
 }
 
 bool TexelPass::current() const {
-  return key_ == r_.errors_.key();
+  return key_ == pictureKey(options_, params_, host_);
 }
 
 void TexelPass::draw(const Frame& frame, bool heatmap) const {
   if (!frame.shadow_sampling) return;  // no map this frame (shadow.off): the lesson's picture
   const ShadowSampling& map = *frame.shadow_sampling;
-  Runner::resetGlState();
+  resetGlState();
   if (heatmap) {
     frame.clearTarget();
   } else {
@@ -97,7 +101,7 @@ void TexelPass::draw(const Frame& frame, bool heatmap) const {
     glClearColor(0, 0, 0, 0);  // z = 0: not counted
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   }
-  const Program& p = heatmap ? r_.gpu_->texel_heatmap : r_.gpu_->texel_raw;
+  const Program& p = heatmap ? heatmap_ : raw_;
   p.use();
   p.set("uViewProjection", frame.projection * frame.view);
   p.set("uShadowMatrix", map.texture_matrix);
@@ -105,7 +109,7 @@ void TexelPass::draw(const Frame& frame, bool heatmap) const {
   p.set("uTolerance", kTexelTolerance);
   frame.setLightingUniforms(p, 0.0f);
   frame.drawObjects(p, Objects::All, nullptr);
-  Runner::resetGlState();
+  resetGlState();
 }
 
 void TexelPass::drawLegend() {

@@ -1,8 +1,8 @@
-// Two passes the runner makes beside a lesson's frame, each an object of its own with the
-// runner's state it needs: the frame without shadow that the shadow's cost is measured against
+// Two passes the runner makes beside a lesson's frame, each an object of its own, handed what
+// it draws with: the frame without shadow that the shadow's cost is measured against
 // (BaselineFrames, side_passes.cpp) and the texel-density pass that says how many map texels
-// fall on a pixel (TexelPass). Both draw into a Measure of their own, so the report's counters
-// stay the lesson's frame's.
+// fall on a pixel (TexelPass). Both draw through the FrameSource into a Measure of their own,
+// so the report's counters stay the lesson's frame's.
 #pragma once
 
 #include <memory>
@@ -12,15 +12,20 @@
 
 #include "gl/measure.hpp"
 #include "math/texel_density.hpp"
+#include "run/frame_source.hpp"
+#include "run/gl_targets.hpp"
 
 namespace shadows {
 
-class Runner;
-struct Frame;
+struct RunOptions;
+class SceneHost;
 
 class BaselineFrames {
  public:
-  explicit BaselineFrames(Runner& runner) : r_(runner) {}
+  // `target`: where its frames go, never seen (the picture's target: same size, same format).
+  BaselineFrames(FrameSource& frames, Params& params, const RunOptions& options,
+                 PictureTarget& target)
+      : frames_(frames), params_(params), options_(options), target_(target) {}
   // The same frame with no shadow work (shadow.off), timed on its own and off-screen, so the
   // report and the panel can say what the shadow costs over it, measured in the same run. The
   // map and every dirty bit are left as they were. Nothing for lessons without shadow.off.
@@ -39,15 +44,21 @@ class BaselineFrames {
   void release() { measure_.reset(); }
 
  private:
-  Runner& r_;
+  FrameSource& frames_;
+  Params& params_;
+  const RunOptions& options_;
+  PictureTarget& target_;
   std::unique_ptr<Measure> measure_;
-  long long frames_ = 0;
+  long long frames_drawn_ = 0;
   bool running_ = false;
 };
 
 class TexelPass {
  public:
-  explicit TexelPass(Runner& runner) : r_(runner) {}
+  // `floats`: the float target it reads back (the truth's, at the same size).
+  TexelPass(FrameSource& frames, const RunOptions& options, const Params& params,
+            const SceneHost& host, FloatTarget& floats)
+      : frames_(frames), options_(options), params_(params), host_(host), floats_(floats) {}
   // Texels per pixel (texel_density.hpp) for the current parameters, read back from the pass
   // over the lesson's map; null when the last frame had no map. Cached until a parameter or
   // the size changes. Its frame draws into its own Measure, enabled: the lesson draws with the
@@ -61,9 +72,16 @@ class TexelPass {
   void draw(const Frame& frame, bool heatmap) const;
   // The aliasing view's colour bar, in the panel while that view shows.
   static void drawLegend();
+  void initGl();  // texel_density.frag's two variants
+  void releaseGl();
 
  private:
-  Runner& r_;
+  FrameSource& frames_;
+  const RunOptions& options_;
+  const Params& params_;
+  const SceneHost& host_;
+  FloatTarget& floats_;
+  Program heatmap_, raw_;  // texel_density.frag: the aliasing view's colours, its numbers
   std::vector<TexelPixel> pixels_;
   std::optional<TexelStats> stats_;
   std::string key_;
