@@ -281,6 +281,108 @@ Scene street() {
   return s;
 }
 
+// LearnOpenGL's shadow-mapping scene, so the two can be compared on the same work.
+Scene cubes() {
+  Scene s;
+  s.objects.push_back(floorObject(25.0f, -0.5f));
+  const MeshData cube = makeBox(glm::vec3(1.0f));  // edge 2
+  const glm::mat4 one(1.0f);
+  s.objects.push_back({"cube_floating",
+                       cube,
+                       translate({0, 1.5f, 0}) * glm::scale(one, glm::vec3(0.5f)),
+                       {0.8f, 0.8f, 0.8f}});
+  s.objects.push_back({"cube_right",
+                       cube,
+                       translate({2, 0, 1}) * glm::scale(one, glm::vec3(0.5f)),
+                       {0.8f, 0.8f, 0.8f}});
+  s.objects.push_back(
+      {"cube_tilted",
+       cube,
+       translate({-1, 0, 2}) *
+           glm::rotate(one, glm::radians(60.0f), glm::normalize(glm::vec3(1, 0, 1))) *
+           glm::scale(one, glm::vec3(0.25f)),
+       {0.8f, 0.8f, 0.8f}});
+  s.light = {true, {-2.0f, 4.0f, -1.0f}, {0.0f, 0.0f, 0.0f}, 60.0f, 10.0f, 1.0f, 7.5f};
+  s.camera = {{0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, -1.0f}, 45.0f, 0.1f, 100.0f};
+  return s;
+}
+
+// Lesson 09: 500 slats in a row under a light, their shadows merged into one strip; an
+// eye below them looking along the row sees the floor through hundreds of volumes, more
+// than an 8-bit stencil counts (seed 003 slide 50).
+Scene fence() {
+  Scene s;
+  s.objects.push_back(floorObject(12.0f, 0.0f));
+  const MeshData slat = makeBox({1.5f, 0.01f, 0.025f});
+  for (int i = 0; i < 500; ++i) {
+    s.objects.push_back({"slat_" + std::to_string(i),
+                         slat,
+                         translate({0.0f, 2.5f, 8.0f - 0.032f * static_cast<float>(i)}),
+                         {0.7f, 0.55f, 0.4f}});
+  }
+  s.light = {false, {0.0f, 10.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 90.0f, 10.0f, 1.0f, 30.0f};
+  s.camera = {{0.0f, 1.5f, 9.5f}, {0.0f, 0.0f, -4.0f}, 45.0f, 0.1f, 100.0f};
+  return s;
+}
+
+// Lesson 14: casters that touch the floor, where a real penumbra is zero at the contact
+// and widens with the distance from it: a tall post, a plank leaning from the floor up
+// away from the light, a ball resting on the floor. The light is low, the shadows long.
+Scene contact() {
+  Scene s;
+  s.objects.push_back(floorObject(8.0f, 0.0f));
+  s.objects.push_back({"post",
+                       makeBox({0.08f, 1.1f, 0.08f}),
+                       translate({-2.0f, 1.1f, -1.3f}),
+                       {0.55f, 0.42f, 0.3f}});
+  const float lean = glm::radians(30.0f), half_length = 1.2f, half_thickness = 0.03f;
+  s.objects.push_back(
+      {"plank",
+       makeBox({half_length, half_thickness, 0.3f}),
+       translate({-0.6f, half_length * std::sin(lean) + half_thickness * std::cos(lean), 0.9f}) *
+           glm::rotate(glm::mat4(1.0f), lean, {0, 0, 1}),
+       {0.75f, 0.6f, 0.4f}});
+  s.objects.push_back(
+      {"ball", makeSphere(0.4f, 48, 24), translate({0.6f, 0.4f, -1.4f}), {0.5f, 0.8f, 0.4f}});
+  s.light = {false, {-4.5f, 4.5f, 2.2f}, {0.3f, 0.2f, -0.2f}, 75.0f, 10.0f, 2.0f, 16.0f};
+  s.camera = {{0.4f, 3.4f, 6.4f}, {0.4f, 0.4f, -0.1f}, 45.0f, 0.1f, 100.0f};
+  return s;
+}
+
+// Lesson 14: depth complexity two from the light. A high slat crosses over a low shelf,
+// so a floor pixel's blocker search finds both, the slat 3 units up (a wide penumbra)
+// and the shelf 0.6 up (a narrow one), and their average is neither.
+Scene overlap() {
+  Scene s;
+  s.objects.push_back(floorObject(8.0f, 0.0f));
+  s.objects.push_back(
+      {"shelf", makeBox({1.2f, 0.03f, 0.7f}), translate({0.0f, 0.6f, 0.3f}), {0.62f, 0.5f, 0.38f}});
+  s.objects.push_back(
+      {"slat", makeBox({0.12f, 0.03f, 2.2f}), translate({0.1f, 3.0f, 0.3f}), {0.75f, 0.6f, 0.4f}});
+  s.light = {false, {0.6f, 7.0f, 1.2f}, {0.0f, 0.3f, 0.2f}, 60.0f, 10.0f, 2.0f, 16.0f};
+  s.camera = {{3.8f, 5.2f, 4.6f}, {0.0f, 0.2f, 0.1f}, 45.0f, 0.1f, 100.0f};
+  return s;
+}
+
+// Lesson 13: a brick on the floor inside the shadow of a board high above it. A filter over
+// the brick's edge averages the board's depth with the brick's: the variance of two blockers
+// at different depths, where variance shadow maps let light bleed into the board's umbra.
+Scene stacked() {
+  Scene s;
+  s.objects.push_back(floorObject(8.0f, 0.0f));
+  s.objects.push_back({"board",
+                       makeBox({1.3f, 0.03f, 1.3f}),
+                       translate({-0.7f, 2.4f, 0.5f}),
+                       {0.62f, 0.5f, 0.38f}});
+  s.objects.push_back({"brick",
+                       makeBox({0.35f, 0.2f, 0.25f}),
+                       translate({2.5f, 0.2f, -0.4f}),
+                       {0.7f, 0.35f, 0.3f}});
+  s.light = {false, {-3.0f, 6.5f, 2.0f}, {0.3f, 0.0f, -0.3f}, 60.0f, 10.0f, 2.0f, 16.0f};
+  s.camera = {{4.6f, 2.4f, 2.6f}, {1.9f, 0.1f, -0.5f}, 45.0f, 0.1f, 100.0f};
+  return s;
+}
+
 }  // namespace
 
 Scene makeScene(const std::string& preset) {
@@ -297,96 +399,20 @@ Scene makeScene(const std::string& preset) {
     s = torusPyramid();
     s.light = {false, {0.6f, 3.5f, -7.5f}, {0.0f, 0.3f, 0.5f}, 60.0f, 10.0f, 3.0f, 16.0f};
   } else if (preset == "cubes") {
-    // LearnOpenGL's shadow-mapping scene, so the two can be compared on the same work.
-    s.objects.push_back(floorObject(25.0f, -0.5f));
-    const MeshData cube = makeBox(glm::vec3(1.0f));  // edge 2
-    const glm::mat4 one(1.0f);
-    s.objects.push_back({"cube_floating",
-                         cube,
-                         translate({0, 1.5f, 0}) * glm::scale(one, glm::vec3(0.5f)),
-                         {0.8f, 0.8f, 0.8f}});
-    s.objects.push_back({"cube_right",
-                         cube,
-                         translate({2, 0, 1}) * glm::scale(one, glm::vec3(0.5f)),
-                         {0.8f, 0.8f, 0.8f}});
-    s.objects.push_back(
-        {"cube_tilted",
-         cube,
-         translate({-1, 0, 2}) *
-             glm::rotate(one, glm::radians(60.0f), glm::normalize(glm::vec3(1, 0, 1))) *
-             glm::scale(one, glm::vec3(0.25f)),
-         {0.8f, 0.8f, 0.8f}});
-    s.light = {true, {-2.0f, 4.0f, -1.0f}, {0.0f, 0.0f, 0.0f}, 60.0f, 10.0f, 1.0f, 7.5f};
-    s.camera = {{0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, -1.0f}, 45.0f, 0.1f, 100.0f};
+    s = cubes();
   } else if (preset == "eye_in_shadow") {
     // Lesson 09: the eye in the torus's shadow, behind it, looking along its shadow on the
     // floor (seed 003 slide 38, the z-pass near plane problem).
     s = torusPyramid();
     s.camera = {{-3.0f, 0.8f, -1.0f}, {-1.0f, 0.0f, 4.0f}, 45.0f, 0.1f, 100.0f};
   } else if (preset == "fence") {
-    // Lesson 09: 500 slats in a row under a light, their shadows merged into one strip; an
-    // eye below them looking along the row sees the floor through hundreds of volumes, more
-    // than an 8-bit stencil counts (seed 003 slide 50).
-    s.objects.push_back(floorObject(12.0f, 0.0f));
-    const MeshData slat = makeBox({1.5f, 0.01f, 0.025f});
-    for (int i = 0; i < 500; ++i) {
-      s.objects.push_back({"slat_" + std::to_string(i),
-                           slat,
-                           translate({0.0f, 2.5f, 8.0f - 0.032f * static_cast<float>(i)}),
-                           {0.7f, 0.55f, 0.4f}});
-    }
-    s.light = {false, {0.0f, 10.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 90.0f, 10.0f, 1.0f, 30.0f};
-    s.camera = {{0.0f, 1.5f, 9.5f}, {0.0f, 0.0f, -4.0f}, 45.0f, 0.1f, 100.0f};
+    s = fence();
   } else if (preset == "contact") {
-    // Lesson 14: casters that touch the floor, where a real penumbra is zero at the contact
-    // and widens with the distance from it: a tall post, a plank leaning from the floor up
-    // away from the light, a ball resting on the floor. The light is low, the shadows long.
-    s.objects.push_back(floorObject(8.0f, 0.0f));
-    s.objects.push_back({"post",
-                         makeBox({0.08f, 1.1f, 0.08f}),
-                         translate({-2.0f, 1.1f, -1.3f}),
-                         {0.55f, 0.42f, 0.3f}});
-    const float lean = glm::radians(30.0f), half_length = 1.2f, half_thickness = 0.03f;
-    s.objects.push_back(
-        {"plank",
-         makeBox({half_length, half_thickness, 0.3f}),
-         translate({-0.6f, half_length * std::sin(lean) + half_thickness * std::cos(lean), 0.9f}) *
-             glm::rotate(glm::mat4(1.0f), lean, {0, 0, 1}),
-         {0.75f, 0.6f, 0.4f}});
-    s.objects.push_back(
-        {"ball", makeSphere(0.4f, 48, 24), translate({0.6f, 0.4f, -1.4f}), {0.5f, 0.8f, 0.4f}});
-    s.light = {false, {-4.5f, 4.5f, 2.2f}, {0.3f, 0.2f, -0.2f}, 75.0f, 10.0f, 2.0f, 16.0f};
-    s.camera = {{0.4f, 3.4f, 6.4f}, {0.4f, 0.4f, -0.1f}, 45.0f, 0.1f, 100.0f};
+    s = contact();
   } else if (preset == "overlap") {
-    // Lesson 14: depth complexity two from the light. A high slat crosses over a low shelf,
-    // so a floor pixel's blocker search finds both, the slat 3 units up (a wide penumbra)
-    // and the shelf 0.6 up (a narrow one), and their average is neither.
-    s.objects.push_back(floorObject(8.0f, 0.0f));
-    s.objects.push_back({"shelf",
-                         makeBox({1.2f, 0.03f, 0.7f}),
-                         translate({0.0f, 0.6f, 0.3f}),
-                         {0.62f, 0.5f, 0.38f}});
-    s.objects.push_back({"slat",
-                         makeBox({0.12f, 0.03f, 2.2f}),
-                         translate({0.1f, 3.0f, 0.3f}),
-                         {0.75f, 0.6f, 0.4f}});
-    s.light = {false, {0.6f, 7.0f, 1.2f}, {0.0f, 0.3f, 0.2f}, 60.0f, 10.0f, 2.0f, 16.0f};
-    s.camera = {{3.8f, 5.2f, 4.6f}, {0.0f, 0.2f, 0.1f}, 45.0f, 0.1f, 100.0f};
+    s = overlap();
   } else if (preset == "stacked") {
-    // Lesson 13: a brick on the floor inside the shadow of a board high above it. A filter over
-    // the brick's edge averages the board's depth with the brick's: the variance of two blockers
-    // at different depths, where variance shadow maps let light bleed into the board's umbra.
-    s.objects.push_back(floorObject(8.0f, 0.0f));
-    s.objects.push_back({"board",
-                         makeBox({1.3f, 0.03f, 1.3f}),
-                         translate({-0.7f, 2.4f, 0.5f}),
-                         {0.62f, 0.5f, 0.38f}});
-    s.objects.push_back({"brick",
-                         makeBox({0.35f, 0.2f, 0.25f}),
-                         translate({2.5f, 0.2f, -0.4f}),
-                         {0.7f, 0.35f, 0.3f}});
-    s.light = {false, {-3.0f, 6.5f, 2.0f}, {0.3f, 0.0f, -0.3f}, 60.0f, 10.0f, 2.0f, 16.0f};
-    s.camera = {{4.6f, 2.4f, 2.6f}, {1.9f, 0.1f, -0.5f}, 45.0f, 0.1f, 100.0f};
+    s = stacked();
   } else if (preset == "bulb_crowd") {
     s = bulbCrowd(24);
   } else if (preset == "bulb_throng") {

@@ -94,6 +94,40 @@ std::string outputProblem(const std::string& flag, const std::string& path, Outp
   return {};
 }
 
+// The flags without a value; false for any other.
+bool readSwitch(const std::string& arg, RunOptions& o) {
+  if (arg == "--headless") return o.headless = true;
+  if (arg == "--window") return o.force_window = true;
+  if (arg == "--hide-panel") return o.hide_panel = true;
+  if (arg == "--panel") return o.panel = true;
+  if (arg == "--list-params") return o.list_params = true;
+  if (arg == "--help" || arg == "-h") return o.help = true;
+  if (arg == "--no-truth") {
+    o.truth = false;
+    return true;
+  }
+  return false;
+}
+
+// What the flags mean together: "" or why they cannot run so. A grade is headless at the
+// grader's size.
+std::string checkTogether(RunOptions& o, bool device_given) {
+  // One rule for both: an exercise is judged by the truth, so --no-truth contradicts it.
+  if (o.exercise > 0 && !o.truth) {
+    return std::string(o.grade ? "--grade" : "--exercise") +
+           " judges by the truth: it cannot run with --no-truth";
+  }
+  if (o.grade) {
+    // A verdict is a headless run measured against the truth, at the READMEs' size.
+    o.headless = true;
+    if (!o.size_given) o.width = kExerciseWidth, o.height = kExerciseHeight;
+  }
+  if (device_given && o.backend != "egl-device") {
+    return "--device chooses an EGL device: it needs --backend egl-device";
+  }
+  return {};
+}
+
 }  // namespace
 
 std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
@@ -118,21 +152,8 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
   for (Arguments args(argc, argv); args.next();) {
     const std::string& arg = args.flag();
     std::string value, why;
-    if (arg == "--headless") {
-      o.headless = true;
-    } else if (arg == "--window") {
-      o.force_window = true;
-    } else if (arg == "--hide-panel") {
-      o.hide_panel = true;
-    } else if (arg == "--panel") {
-      o.panel = true;
-    } else if (arg == "--no-truth") {
-      o.truth = false;
-    } else if (arg == "--list-params") {
-      o.list_params = true;
-    } else if (arg == "--help" || arg == "-h") {
-      o.help = true;
-    } else if (arg == "--backend") {
+    if (readSwitch(arg, o)) continue;
+    if (arg == "--backend") {
       args.value(value);
       if (why = checkBackend(value); why.empty()) o.backend = value;
     } else if (arg == "--device") {
@@ -171,19 +192,7 @@ std::string parseCommandLine(int argc, char** argv, RunOptions& o) {
     }
     if (!why.empty()) return why;
   }
-  // One rule for both: an exercise is judged by the truth, so --no-truth contradicts it.
-  if (o.exercise > 0 && !o.truth) {
-    return std::string(o.grade ? "--grade" : "--exercise") +
-           " judges by the truth: it cannot run with --no-truth";
-  }
-  if (o.grade) {
-    // A verdict is a headless run measured against the truth, at the READMEs' size.
-    o.headless = true;
-    if (!o.size_given) o.width = kExerciseWidth, o.height = kExerciseHeight;
-  }
-  if (device_given && o.backend != "egl-device") {
-    return "--device chooses an EGL device: it needs --backend egl-device";
-  }
+  if (std::string why = checkTogether(o, device_given); !why.empty()) return why;
   // Two outputs into one file would leave only the last: refuse it up front, however the two
   // names spell it (./a.png, sub/../a.png, a link, a hard link). Only a character device such
   // as /dev/null may take several.

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -56,6 +57,30 @@ void trimCache(const std::filesystem::path& dir) {
     total += std::filesystem::file_size(path, ec);
     if (total > kKeep) std::filesystem::remove(path, ec);
   }
+}
+
+// A bake kept on disk for job `id` (`texels` values), or none: no file, or one that is
+// damaged or answers another bake, which is never believed (said once, baked again and
+// written over).
+std::optional<std::vector<float>> readCachedBake(const std::string& path, std::uint64_t id,
+                                                 size_t texels) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
+  std::string damage;
+  try {
+    // readTruthTrace refuses a size its header does not give, and values no bake can have
+    // (NaN, outside [0, 1]).
+    TruthTrace trace = readTruthTrace(path);
+    if (trace.job_id == id && trace.visibility.size() == texels) {
+      return std::move(trace.visibility);
+    }
+    damage = "it answers another bake";
+  } catch (const std::exception& e) {
+    damage = e.what();
+  }
+  std::fprintf(stderr, "light map: the cached bake is damaged (%s): baking it again\n",
+               printable(damage).c_str());
+  return std::nullopt;
 }
 
 }  // namespace
@@ -120,29 +145,14 @@ void LightMapBaker::start(BakeRequest request, bool wait) {
   const CacheDirectory dir = cacheDirectory();
   if (!dir.path.empty()) {
     running->cache_path = dir.path + "/lightmap-" + hex(id) + ".trace";
-    std::error_code ec;
-    if (std::filesystem::is_regular_file(running->cache_path, ec)) {
-      std::string damage;
-      try {
-        // readTruthTrace refuses a size its header does not give, and values no bake can have
-        // (NaN, outside [0, 1]).
-        TruthTrace trace = readTruthTrace(running->cache_path);
-        if (trace.job_id == id && trace.visibility.size() == job.surface.position.size()) {
-          state_.stage = BakeState::Stage::kDone;
-          state_.from_cache = true;
-          state_.progress = 1.0;
-          state_.message = "loaded from " + running->cache_path;
-          state_.visibility =
-              std::make_shared<const std::vector<float>>(std::move(trace.visibility));
-          return;
-        }
-        damage = "it answers another bake";
-      } catch (const std::exception& e) {
-        damage = e.what();
-      }
-      // A damaged or foreign file is never believed: said once, baked again and written over.
-      std::fprintf(stderr, "light map: the cached bake is damaged (%s): baking it again\n",
-                   printable(damage).c_str());
+    if (std::optional<std::vector<float>> kept =
+            readCachedBake(running->cache_path, id, job.surface.position.size())) {
+      state_.stage = BakeState::Stage::kDone;
+      state_.from_cache = true;
+      state_.progress = 1.0;
+      state_.message = "loaded from " + running->cache_path;
+      state_.visibility = std::make_shared<const std::vector<float>>(std::move(*kept));
+      return;
     }
   } else {
     state_.message = "no disk cache: " + dir.why;

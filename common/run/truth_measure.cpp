@@ -48,6 +48,37 @@ std::optional<TruthTrace> readMemo(const Memo& memo, const TruthJob& job) {
   return std::nullopt;
 }
 
+// The job's trace: another tracer's answer given for it, the suite's memo of it, or traced
+// here (the tracer kept in `out` for the next job on the same scene).
+TruthTrace obtainTrace(TruthInputs& in, TruthResult& out) {
+  const TruthJob& job = in.job;
+  if (in.given) {
+    // Another tracer's answer: only to this very job (the same scene, view, light, size).
+    if (in.given->job_id != job.id()) {
+      throw TruthMismatch(
+          "--truth-from: the trace answers another job (other parameters, "
+          "size or scene); write the job again with --truth-job");
+    }
+    TruthTrace trace = std::move(*in.given);
+    if (trace.width != job.surface.width || trace.height != job.surface.height ||
+        trace.air.has_value() != job.air.has_value()) {
+      throw TruthMismatch("--truth-from: the trace does not fit its job (size or air)");
+    }
+    return trace;
+  }
+  const std::optional<Memo> memo = memoFor(job);  // the suite's only
+  if (std::optional<TruthTrace> kept = memo ? readMemo(*memo, job) : std::nullopt) {
+    return std::move(*kept);
+  }
+  out.truth = in.truth ? in.truth : makeTruthTracer(job);
+  TruthTrace trace = out.truth->trace(job);
+  if (memo) {
+    trace.job_id = memo->job_id;
+    keepTruthTrace(memo->path, trace);
+  }
+  return trace;
+}
+
 }  // namespace
 #endif
 
@@ -60,32 +91,7 @@ TruthResult traceTruth(TruthInputs in) {
   TruthResult out;
   out.key = in.key;
   const TruthJob& job = in.job;
-  TruthTrace trace;
-  if (in.given) {
-    // Another tracer's answer: only to this very job (the same scene, view, light, size).
-    if (in.given->job_id != job.id()) {
-      throw TruthMismatch(
-          "--truth-from: the trace answers another job (other parameters, "
-          "size or scene); write the job again with --truth-job");
-    }
-    trace = std::move(*in.given);
-    if (trace.width != job.surface.width || trace.height != job.surface.height ||
-        trace.air.has_value() != job.air.has_value()) {
-      throw TruthMismatch("--truth-from: the trace does not fit its job (size or air)");
-    }
-  } else {
-    const std::optional<Memo> memo = memoFor(job);  // the suite's only
-    if (std::optional<TruthTrace> kept = memo ? readMemo(*memo, job) : std::nullopt) {
-      trace = std::move(*kept);
-    } else {
-      out.truth = in.truth ? in.truth : makeTruthTracer(job);
-      trace = out.truth->trace(job);
-      if (memo) {
-        trace.job_id = memo->job_id;
-        keepTruthTrace(memo->path, trace);
-      }
-    }
-  }
+  TruthTrace trace = obtainTrace(in, out);
   if (in.keep_bytes) {
     trace.job_id = job.id();
     out.job_bytes = serializeTruthJob(job);
