@@ -124,7 +124,11 @@ class SoftShadows final : public Lesson {
            define("SHADOW_OFF", map_.off()),
            // The fixed kernel at pcf.radius=0 with nearest compares: every tap the same 0 or 1.
            feature("PCF_KERNEL", mode_() != SoftMode::Fixed || fixed_radius_() > 0.0f ||
-                                     filter_.name() == "linear")});
+                                     filter_.name() == "linear"),
+           // A point light (radius 0): the search finds all or none, the one compare's answer;
+           // the blockers view shows the search itself.
+           feature("PCSS_SEARCH", light_radius_() > 0.0f || !skip_umbra_() ||
+                                      filter_.name() == "linear" || f.shows(kBlockers))});
       e.set("uViewProjection", f.projection * f.view);
       e.set("uShadowMatrix", map_.textureMatrix());  // B * P_light * V_light
       e.set("uShadowMap", 0);

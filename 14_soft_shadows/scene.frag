@@ -24,7 +24,7 @@ uniform float uSearchFrom;  // where the search cone is cut: the nearest caster'
 uniform float uFixedRadius;     // PCSS_MODE_FIXED: lesson 05's one kernel half-width, texels
 // Compiled per setting (main.cpp): PCSS_MODE (hard, fixed, pcss), the search's Poisson disk
 // (SEARCH_TAP_COUNT points SEARCH_UNIT_TAPS in the unit circle), PCSS_SKIP_UMBRA, the view,
-// SHADOW_OFF and PCSS_COUNT.
+// SHADOW_OFF, PCSS_COUNT, and PCF_KERNEL and PCSS_SEARCH, 0 where their code changes no pixel.
 #ifdef SEARCH_TAP_COUNT
 const vec2 kSearchTaps[SEARCH_TAP_COUNT] = SEARCH_UNIT_TAPS;
 #endif
@@ -70,6 +70,11 @@ float softShadow(vec3 p) {
 #else
   return tap(p, vec2(0.0));  // pcf.radius=0, nearest: every tap this one's 0 or 1
 #endif
+#elif !PCSS_SEARCH
+  // pcss.light_radius=0 (a point light), the umbra skipped, nearest compares: the search region
+  // is the pixel's own texel, which is a blocker for every tap or for none, so the answer is
+  // the one compare's (Lesson14.APointLightGivesTheHardShadowBitForBit, with the search in).
+  return tap(p, vec2(0.0));
 #else
   float receiver = lightDistance(p.z);
   // 1. The search region: the cone to the light's disk, cut where the casters begin.

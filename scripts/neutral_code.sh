@@ -39,6 +39,7 @@ cases=(
   "05_pcf_dithered|PCF_KERNEL|pcf.mode=grid pcf.taps=9 pcf.early_out=false pcf.radius=0"
   "13_filterable_maps|PCF_KERNEL|filter.method=pcf filter.radius=0"
   "14_soft_shadows|PCF_KERNEL|pcss.mode=fixed pcf.radius=0"
+  "14_soft_shadows|PCSS_SEARCH|pcss.light_radius=0"
 )
 frame() {  # LESSON SETTINGS...: the frame's M instructions
   local lesson=$1

@@ -266,7 +266,14 @@ INSTANTIATE_TEST_SUITE_P(
                     "PCF_KERNEL",
                     "filter.radius=2"},
         NeutralCase{
-            "14_soft_shadows", {"pcss.mode=fixed", "pcf.radius=0"}, "PCF_KERNEL", "pcf.radius=3"}),
+            "14_soft_shadows", {"pcss.mode=fixed", "pcf.radius=0"}, "PCF_KERNEL", "pcf.radius=3"},
+        // A point light: the search's region is the pixel's own texel (the blockers view shows
+        // the search, grey where it found only blockers, so it keeps it).
+        NeutralCase{"14_soft_shadows",
+                    {"pcss.light_radius=0"},
+                    "PCSS_SEARCH",
+                    "pcss.light_radius=0.3",
+                    "blockers"}),
     [](const ::testing::TestParamInfo<NeutralCase>& test_case) {
       std::string name = test_case.param.lesson.substr(0, 2) + "_" + test_case.param.feature;
       for (const std::string& set : test_case.param.neutral) {
