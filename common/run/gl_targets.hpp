@@ -12,33 +12,34 @@
 
 namespace shadows {
 
-// Colour RGBA8 with depth and stencil.
-class PictureTarget {
+// Colour of one format with depth and stencil.
+class OffscreenTarget {
  public:
+  explicit OffscreenTarget(GLenum format) : format_(format) {}
   void ensure(int width, int height);
   GLuint id() const { return framebuffer_ ? framebuffer_->id() : 0; }
-  Image read(int width, int height) const;  // bottom-up rows, as the PNGs are written
-  void release() { *this = PictureTarget(); }
+  void release();
 
  private:
+  GLenum format_;
   Texture color_, depth_;
   std::unique_ptr<Framebuffer> framebuffer_;
   int width_ = 0, height_ = 0;
 };
 
-// Colour RGBA32F with depth and stencil: allocated only where the truth or the texel numbers
-// are measured (a --no-truth run without --report never clears its 20 bytes a pixel, a fifth
-// of a short headless run on llvmpipe). Throws GlFailure without float colour targets.
-class FloatTarget {
+// RGBA8: the picture.
+class PictureTarget : public OffscreenTarget {
  public:
-  void ensure(int width, int height);
-  GLuint id() const { return framebuffer_ ? framebuffer_->id() : 0; }
-  void release() { *this = FloatTarget(); }
+  PictureTarget() : OffscreenTarget(GL_RGBA8) {}
+  Image read(int width, int height) const;  // bottom-up rows, as the PNGs are written
+};
 
- private:
-  Texture color_, depth_;
-  std::unique_ptr<Framebuffer> framebuffer_;
-  int width_ = 0, height_ = 0;
+// RGBA32F: allocated only where the truth or the texel numbers are measured (a --no-truth run
+// without --report never clears its 20 bytes a pixel, a fifth of a short headless run on
+// llvmpipe). ensure() throws GlFailure without float colour targets.
+class FloatTarget : public OffscreenTarget {
+ public:
+  FloatTarget() : OffscreenTarget(GL_RGBA32F) {}
 };
 
 // The GL state every pass of the runner's starts from (and every lesson's frame).
