@@ -31,7 +31,6 @@ class ExerciseRun {
   // before the first).
   const Exercise* chosen() const { return chosen_ ? &*chosen_ : nullptr; }
   int number() const { return number_; }  // its number (1-based; 0: none)
-  size_t count() const { return all_.size(); }
   const Verdict& verdict() const { return verdict_; }
   bool judged() const { return judged_at_ >= 0; }
   // The command line's exercise, before any setting is applied.

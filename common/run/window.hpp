@@ -65,7 +65,6 @@ class RunnerWindow {
   void drawPanelTexture(int width, int height);
   void laySavedPanel(const Frame& frame, const SceneHost& host);
   bool panelHidden() const { return panel_hidden_; }
-  GLFWwindow* glfw() const { return window_; }  // null until begin() opened one
   void releaseGl();  // the panel's texture and program, before the context goes
 
   bool is_open = false;
