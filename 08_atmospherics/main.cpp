@@ -81,6 +81,12 @@ class Atmospherics final : public Lesson {
 
   void render(Frame& f) override {
     loadSpot(image_(), falloff_());
+    // Without dust (air.density=0) the air scatters no light: the slices, the low-res depth and
+    // the upsample would each add exactly 0 to every pixel, so none is drawn.
+    air_skipped_ = !(f.shows(views::kShaded) || f.shows(views::kAir)) ? "this view shows no air"
+                   : density_() > 0.0f || neutralCodeKept("AIR_SLICES")
+                       ? ""
+                       : "air.density=0: no dust scatters light, no slice is drawn";
     // 1. The shadow map, lesson 04's default bias (back faces + glPolygonOffset(1.1, 4)). Every
     // object goes in, the floor and walls too: they cast nothing on a surface, but they shadow
     // the air behind them (the dust beneath the floor, seen from below it).
@@ -114,11 +120,19 @@ class Atmospherics final : public Lesson {
       f.drawObjects(room, Objects::All);
     }
     // 4. The air.
-    if (f.shows(views::kShaded) || f.shows(views::kAir)) drawSlices(f, cone);
+    if (air_skipped_.empty()) {
+      drawSlices(f, cone);
+    } else {
+      f.measure.count("air_slices", 0);
+    }
     if (f.shows(views::kShaded) || f.shows(kSurfaces)) map_.drawInset(f);
   }
 
   void panel(Frame&) override {
+    if (!air_skipped_.empty()) {
+      ImGui::TextWrapped("air: none (%s)", air_skipped_.c_str());
+      return;
+    }
     // Which air is on screen: the preview while input moves, the full air once it rests.
     const std::string resolution =
         downsample_drawn_ == 1 ? "full" : "1/" + std::to_string(downsample_drawn_);
@@ -147,6 +161,14 @@ class Atmospherics final : public Lesson {
   }
 
   void report(JsonWriter& json) const override {
+    // No slices drawn, none placed: where they would have gone is no figure of this frame.
+    if (!air_skipped_.empty()) {
+      for (const char* key : {"air_depth_near", "air_depth_far", "air_step", "air_downsample"}) {
+        json.notCounted(key, air_skipped_);
+      }
+      json.value("air_quality", "none");
+      return;
+    }
     json.value("air_depth_near", near_);
     json.value("air_depth_far", far_);
     json.value("air_step", step_);
@@ -450,6 +472,7 @@ class Atmospherics final : public Lesson {
   static constexpr int kPreviewDownsample = 8;
   bool preview_ = false;
   int slices_drawn_ = 0, downsample_drawn_ = 1;
+  std::string air_skipped_;  // why this frame drew no air ("" when it did)
   float near_ = 0.0f, far_ = 0.0f, step_ = 0.0f;
   std::optional<long long> passed_ = 0;  // empty: this context cannot count them
 };

@@ -40,6 +40,7 @@ cases=(
   "13_filterable_maps|PCF_KERNEL|filter.method=pcf filter.radius=0"
   "14_soft_shadows|PCF_KERNEL|pcss.mode=fixed pcf.radius=0"
   "14_soft_shadows|PCSS_SEARCH|pcss.light_radius=0"
+  "08_atmospherics|AIR_SLICES|air.density=0"
 )
 frame() {  # LESSON SETTINGS...: the frame's M instructions
   local lesson=$1

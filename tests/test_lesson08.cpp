@@ -1,5 +1,6 @@
 // Lesson 08 end to end, headless: the air light against the ray-marched truth, what more
 // slices buy, the work the cone bounds and the early depth test skip, and the extremes.
+#include "gl/program.hpp"
 #include "harness.hpp"
 
 namespace shadows {
@@ -254,6 +255,41 @@ TEST(Lesson08, NoAirStillReportsTheAirFiguresWithTheReason) {
   auto lit = startLesson(kLesson, {});
   lit->renderFrame();
   EXPECT_TRUE(lit->measureError().metrics.air.note.empty());
+}
+
+// Issue 56: no dust, no air to draw. The slices, the low-res depth and the upsample are
+// skipped, the report says so, and the picture is byte for byte the one they would draw.
+TEST(Lesson08, NoDustDrawsNoSlicesAndChangesNoPixel) {
+  auto runner = startLesson(kLesson, {"air.density=0"}, 160, 120);
+  for (const std::string& scene : runner->params().at("scene").choices) {
+    for (const char* view : {"shaded", "air"}) {
+      for (const char* k : {"1", "2"}) {
+        const std::vector<std::string> sets = {"scene=" + scene, std::string("view=") + view,
+                                               std::string("air.downsample=") + k};
+        ASSERT_EQ(runner->applySets(sets), "");
+        runner->renderFrame();
+        const std::vector<std::uint8_t> without = runner->readImage().rgba;
+        EXPECT_EQ(testing::counter(*runner, "air_slices"), 0) << label(sets);
+        EXPECT_EQ(testing::reportString(*runner, "air_quality"), "none") << label(sets);
+        keepNeutralCode(true);
+        runner->renderFrame();
+        keepNeutralCode(false);
+        EXPECT_EQ(testing::counter(*runner, "air_slices"), 64) << label(sets);
+        EXPECT_EQ(runner->readImage().rgba, without) << label(sets);
+      }
+    }
+  }
+  // Where no slice went is no figure: null, and why.
+  runner->renderFrame();
+  EXPECT_TRUE(testing::reportValue(*runner, "air_step").is_null());
+  EXPECT_NE(testing::reportString(*runner, "air_step_not_counted").find("air.density=0"),
+            std::string::npos);
+  // With dust, the slices are drawn and placed.
+  ASSERT_EQ(runner->applySets({"air.density=0.15"}), "");
+  runner->renderFrame();
+  EXPECT_EQ(testing::counter(*runner, "air_slices"), 64);
+  EXPECT_GT(testing::reportNumber(*runner, "air_step"), 0.0);
+  EXPECT_EQ(runner->glErrors(), 0);
 }
 
 TEST(Lesson08, ADarkTruthGivesNoRelativeErrorButSaysWhy) {

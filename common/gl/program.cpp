@@ -247,10 +247,13 @@ std::string& keptFeatures() {
 }
 }  // namespace
 
-std::vector<std::string> feature(const std::string& name, bool working) {
+bool neutralCodeKept(const std::string& name) {
   const std::string& kept = keptFeatures();
-  const bool keep = kept == "1" || ("," + kept + ",").find("," + name + ",") != std::string::npos;
-  return define(name, working || keep ? 1 : 0);
+  return kept == "1" || ("," + kept + ",").find("," + name + ",") != std::string::npos;
+}
+
+std::vector<std::string> feature(const std::string& name, bool working) {
+  return define(name, working || neutralCodeKept(name) ? 1 : 0);
 }
 
 void keepNeutralCode(bool keep) {

@@ -85,6 +85,9 @@ inline std::vector<std::string> define(const std::string& name, int value) {
 // scripts/neutral_code.sh can count what it saves.
 std::vector<std::string> feature(const std::string& name, bool working);
 void keepNeutralCode(bool keep);
+// Whether the neutral code of `name` is kept (as above): for work a lesson skips in C++ rather
+// than in a shader (08's slices at air.density=0), so the same switch draws it anyway.
+bool neutralCodeKept(const std::string& name);
 
 // One #define line "NAME vec2[](vec2(x, y), ...)": constants computed in C++ compiled into a
 // shader (`const vec2 k[N] = NAME;`). Each float is written so that it reads back as the same
