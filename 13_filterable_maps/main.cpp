@@ -10,7 +10,11 @@
 //        inequality bounds the fraction of the filter's texels at or beyond the receiver;
 //   ESM  stores exp(c z); the blur averages exponentials and exp(-c t) turns that into a
 //        soft compare, exp(-c (t - z)) per texel: 1 at the receiver's own depth, near 0
-//        (never 0) behind a blocker far enough in front of it.
+//        (never 0) behind a blocker far enough in front of it;
+//   MSM  (moment shadow maps, Peters and Klein 2015) stores z, z^2, z^3, z^4: seed 002's
+//        "other approximating functional forms". Four moments bound the lit fraction as
+//        tightly as any distribution with them allows (msm_math.hpp): two blockers at two
+//        depths no longer bleed.
 // Seed 002's critique, measured: the two-parameter VSM is right for one blocker over one
 // receiver and bleeds light where two blockers at different depths share the filter.
 #include <imgui.h>
@@ -21,23 +25,27 @@
 #include "core/json.hpp"
 #include "lesson/lesson.hpp"
 #include "math/pcf_math.hpp"
+#include "msm_math.hpp"
 #include "shadow/area_match.hpp"
 #include "shadow/shadow_map.hpp"
 
 namespace shadows {
 
 namespace {
-const std::vector<std::string> kMethods = {"pcf", "vsm", "esm"};
-enum class Method { Pcf, Vsm, Esm };
+const std::vector<std::string> kMethods = {"pcf", "vsm", "esm", "msm"};
+enum class Method { Pcf, Vsm, Esm, Msm };
 
 }  // namespace
 
 class FilterableMaps final : public Lesson {
  public:
-  std::string title() const override { return "Filterable maps: blur the map once (VSM, ESM)"; }
+  std::string title() const override {
+    return "Filterable maps: blur the map once (VSM, ESM, MSM)";
+  }
   std::string seeds() const override {
-    return "seed 002: Variance shadow maps (two-parameter approximation, Deep Shadow Maps); "
-           "003: further techniques; 000: Percentage Closer filtering";
+    return "seed 002: Variance shadow maps (two-parameter approximation, Deep Shadow Maps; "
+           "other approximating functional forms: four moments); 003: further techniques; "
+           "000: Percentage Closer filtering";
   }
   static constexpr View kMoments{"moments"};
   std::vector<View> debugViews() const override { return {kMoments}; }
@@ -48,8 +56,8 @@ class FilterableMaps final : public Lesson {
   void declare(Params& p) override {
     map_.declare(p);
     method_ = p.addChoice("filter.method", kMethods, "vsm",
-                          "pcf: compare, then average (05); vsm: moments and Chebyshev; esm: "
-                          "exp(c z)",
+                          "pcf: compare, then average (05); vsm: two moments and Chebyshev; esm: "
+                          "exp(c z); msm: four moments",
                           kDirtyShadowMap);
     radius_ = p.addFloat("filter.radius", 4.0f, 0.0f, 16.0f,
                          "the filter's half-width in texels, PCF's kernel and the blur alike");
@@ -65,6 +73,10 @@ class FilterableMaps final : public Lesson {
     bleeding_ = p.addFloat("vsm.bleeding", 0.0f, 0.0f, 0.95f,
                            "light-bleeding reduction: bounds under this count as shadow");
     exponent_ = p.addFloat("esm.c", 40.0f, 1.0f, 80.0f, "ESM's exponent c", kDirtyShadowMap);
+    moment_bias_ = p.addFloat("msm.bias", 3e-5f, 0.0f, 1e-2f,
+                              "MSM: the moments pulled this far toward a safe distribution "
+                              "(against rounding)")
+                       .logScale();
     linear_filter_ = p.at("shadow.filter");
     inset_ = p.at("inset");
     dimming_ = p.addFloat("dimming", 0.4f, 0.0f, 1.0f,
@@ -146,6 +158,9 @@ class FilterableMaps final : public Lesson {
     e.set("uExponent", exponent_());
     e.set("uMinVariance", min_variance_());
     e.set("uBleeding", bleeding_());
+    e.set("uMomentDecode", decode_);
+    e.set("uEncodeOffset", msm::kEncodeOffset);
+    e.set("uMomentBias", moment_bias_());
     setDepthUniforms(f, e);
     f.setLightingUniforms(e, dimming_());
     f.drawObjects(e, Objects::All);
@@ -170,14 +185,16 @@ class FilterableMaps final : public Lesson {
     preset("VSM", "vsm");
     ImGui::SameLine();
     preset("ESM", "esm");
+    ImGui::SameLine();
+    preset("MSM", "msm");
     const int n = taps_();
     if (method_() == Method::Pcf) {
       ImGui::TextWrapped("cost: %d taps a pixel, every frame", n * n);
     } else {
       ImGui::TextWrapped(
           "cost: 1 lookup a pixel; the blur 2 x %d taps a texel, once per map "
-          "(moments %d-bit)",
-          n, bits_used_);
+          "(%d moments of %d bits: %d bytes a texel)",
+          n, channels(), bits_used_, bytesPerTexel());
     }
     const ErrorState& error = f.runner.lastError();
     if (error.valid) {
@@ -227,6 +244,7 @@ class FilterableMaps final : public Lesson {
     json.value("truth_area_radius", match_.radius);
     json.value("kernel_half_width_texels", kernel_texels_);
     json.value("moments_bits_used", method_() == Method::Pcf ? 0 : bits_used_);
+    json.value("moments_bytes_per_texel", method_() == Method::Pcf ? 0 : bytesPerTexel());
     // What the lookup filters with: the levels (1: bilinear; more: trilinear) and anisotropy.
     json.value("moments_levels", method_() == Method::Pcf ? 0 : moments_[kBlurred].levels());
     json.value("anisotropy_used", method_() != Method::Pcf && mipmaps_()
@@ -239,9 +257,14 @@ class FilterableMaps final : public Lesson {
   // The moments' textures and their framebuffers: kRaw as rendered (the blur's source, kept so
   // that a new blur starts from it), kAcross blurred along x, kBlurred along y too (looked up).
   static constexpr int kBlurred = 0, kAcross = 1, kRaw = 2;
+  // The channels a method's moments take (ESM fills one of two), and their bytes a texel.
+  int channels() const { return method_() == Method::Msm ? 4 : 2; }
+  int bytesPerTexel() const { return channels() * bits_used_ / 8; }
   static constexpr float kAnisotropy = 16.0f;
   bool ensureMoments(int width, int height) {
-    const GLenum format = bits_used_ == 16 ? GL_RG16F : GL_RG32F;
+    const bool four = method_() == Method::Msm;
+    const GLenum format =
+        bits_used_ == 16 ? (four ? GL_RGBA16F : GL_RG16F) : (four ? GL_RGBA32F : GL_RG32F);
     const bool mipmapped = mipmaps_();
     if (moments_[kBlurred].width() == width && moments_[kBlurred].height() == height &&
         format_ == format && (moments_[kBlurred].levels() > 1) == mipmapped) {
@@ -257,7 +280,7 @@ class FilterableMaps final : public Lesson {
       if (levels) moments_[k].setAnisotropy(kAnisotropy);
       // Outside the map, nothing in front: z = 1, as a depth map's border (ES: the shader).
       moments_[k].setWrap(GL_CLAMP_TO_BORDER, GL_CLAMP_TO_BORDER);
-      moments_[k].setBorder(glm::vec4(1.0f, 1.0f, 0.0f, 1.0f));
+      moments_[k].setBorder(nothing());
       framebuffers_[k] = std::make_unique<Framebuffer>();
       framebuffers_[k]->attachColor(moments_[k]);
       if (k == kRaw) {
@@ -267,6 +290,12 @@ class FilterableMaps final : public Lesson {
       framebuffers_[k]->check();
     }
     return true;
+  }
+
+  // What a texel with nothing in front stores (z = 1): the clear, the border, the blur's edge.
+  // VSM z = 1 and z^2 = 1; ESM exp(c (1 - 1)) = 1; MSM the encoded powers of 1.
+  glm::vec4 nothing() const {
+    return method_() == Method::Msm ? msm::encode(1.0f) : glm::vec4(1.0f, 1.0f, 0.0f, 1.0f);
   }
 
   void setDepthUniforms(const Frame& f, const Program& program) const {
@@ -286,12 +315,15 @@ class FilterableMaps final : public Lesson {
     pass.width = map_.width();
     pass.height = map_.height();
     pass.bindTarget();
-    glClearColor(1.0f, 1.0f, 0.0f, 1.0f);  // nothing in front: z = 1 and exp(c (1 - 1)) = 1
+    const glm::vec4 clear = nothing();
+    glClearColor(clear.r, clear.g, clear.b, clear.a);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     const Program& m = moment_programs_.get({methodDefines});
     const glm::mat4 light = map_.lightViewProjection();
     m.set("uLightViewProjection", light);
     m.set("uExponent", exponent_());
+    m.set("uMomentEncode", msm::encodeMatrix());
+    m.set("uEncodeOffset", msm::kEncodeOffset);
     setDepthUniforms(f, m);
     // Every object, the floor too: a moment is an average over the filter's texels, and a
     // texel the floor fills but the map leaves at the far plane would average in a depth
@@ -310,6 +342,7 @@ class FilterableMaps final : public Lesson {
         {{defineVec2Array("BLUR_UNIT_TAPS", row), "BLUR_TAPS " + std::to_string(n)}});
     b.set("uRadius", radius_());
     b.set("uSource", 0);
+    b.set("uNothing", nothing());
     const glm::vec2 texel(1.0f / static_cast<float>(map_.width()),
                           1.0f / static_cast<float>(map_.height()));
     for (int axis = 0; axis < 2; ++axis) {
@@ -338,7 +371,8 @@ class FilterableMaps final : public Lesson {
   ChoiceParam<Method> method_;
   ChoiceParam<> bits_, linear_filter_;
   BoolParam inset_, mipmaps_;
-  FloatParam radius_, min_variance_, bleeding_, exponent_, dimming_;
+  FloatParam radius_, min_variance_, bleeding_, exponent_, moment_bias_, dimming_;
+  glm::mat4 decode_ = msm::decodeMatrix();
   BackFaceBias bias_;
   IntParam taps_;
 };

@@ -3,7 +3,9 @@
 // seed 000's illumination model with dimming. FILTER_METHOD (compiled per setting, main.cpp):
 //   PCF  compare first, then average (05's grid over +-uRadius texels, common/shaders/pcf.glsl);
 //   VSM  the blurred moments' mean and variance, and Chebyshev's bound on the lit fraction;
-//   ESM  the blurred exp(c (z - 1)) times exp(-c (t - 1)).
+//   ESM  the blurred exp(c (z - 1)) times exp(-c (t - 1));
+//   MSM  the blurred four moments, decoded, and the sharpest lower bound on the shadow they
+//        allow (Hamburger 4MSM, Peters and Klein 2015; msm_math.hpp mirrors it).
 #include "lighting.glsl"
 #include "pcf.glsl"
 #include "light_depth.glsl"
@@ -17,6 +19,9 @@ uniform float uRadius;       // PCF: the kernel's half-width in texels
 uniform float uExponent;     // esm.c
 uniform float uMinVariance;  // vsm.min_variance
 uniform float uBleeding;     // vsm.bleeding: the lowest bound cut off and the rest rescaled
+uniform mat4 uMomentDecode;  // MSM: msm::decodeMatrix()
+uniform float uEncodeOffset;
+uniform float uMomentBias;   // msm.bias: the moments pulled toward kBiasTarget by this much
 out vec4 outColor;
 
 // Chebyshev's one-sided inequality: at most variance / (variance + (t - mean)^2) of the texels
@@ -34,6 +39,35 @@ float chebyshev(vec2 moments, float t) {
   return clamp(p, 0.0, 1.0);  // vsm.bleeding=0: (p - 0) / 1, without the divide
 #endif
 }
+
+#if FILTER_METHOD == FILTER_METHOD_MSM
+// Of every distribution of depths with these four moments, the one with the most mass in front
+// of t lies on three depths: t and the two roots of c1 + c2 z + c3 z^2, where B c = (1, t, t^2)
+// and B is the moments' Hankel matrix. 1 - that mass: the lit fraction.
+float momentLit(vec4 stored, float t) {
+  vec4 b = uMomentDecode * (stored - vec4(uEncodeOffset, 0.0, 0.0, 0.0));
+  b = mix(b, vec4(0.5), uMomentBias);
+  // B = [[1, b1, b2], [b1, b2, b3], [b2, b3, b4]] = L D L^T
+  float d22 = b.y - b.x * b.x;
+  float l32 = (b.z - b.x * b.y) / d22;
+  float d33 = b.w - b.y * b.y - l32 * l32 * d22;
+  float c1 = 1.0, c2 = t - b.x, c3 = t * t - b.y - l32 * c2;
+  c2 /= d22;
+  c3 /= d33;
+  c2 -= l32 * c3;
+  c1 -= b.x * c2 + b.y * c3;
+  float p = c2 / c3, q = c1 / c3;
+  float r = sqrt(max(0.25 * p * p - q, 0.0));
+  float z2 = -0.5 * p - r, z3 = -0.5 * p + r;
+  float shadow = 0.0;
+  if (z3 < t) {
+    shadow = 1.0 - (b.y - b.x * (z2 + z3) + z2 * z3) / ((t - z2) * (t - z3));
+  } else if (z2 < t) {
+    shadow = (b.y - b.x * (t + z3) + t * z3) / ((t - z2) * (z3 - z2));
+  }
+  return 1.0 - clamp(shadow, 0.0, 1.0);
+}
+#endif
 
 float shadowTerm(vec3 n, vec3 toLight) {
   // Facing away from the light (the geometric normal, as the truth sees it): in its own
@@ -57,6 +91,8 @@ float shadowTerm(vec3 n, vec3 toLight) {
   t = max(t, 0.0);
 #if FILTER_METHOD == FILTER_METHOD_VSM
   return chebyshev(m.xy, t);
+#elif FILTER_METHOD == FILTER_METHOD_MSM
+  return momentLit(m, t);
 #else
   return clamp(m.x * exp(uExponent * (1.0 - t)), 0.0, 1.0);
 #endif

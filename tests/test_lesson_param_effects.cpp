@@ -134,6 +134,7 @@ const std::map<std::string, std::vector<std::string>> kActsWhen = {
     {"13_filterable_maps/shadow.filter", {"filter.method=pcf"}},
     {"13_filterable_maps/shadow.format", with(kNearLight, {"filter.method=pcf"})},
     {"13_filterable_maps/esm.c", {"filter.method=esm"}},
+    {"13_filterable_maps/msm.bias", {"filter.method=msm"}},
     // 14: the one width is the fixed mode's (pcss derives its own).
     {"14_soft_shadows/pcf.radius", {"pcss.mode=fixed"}},
     // How the copy is made shows in its counters, on frames that render the map.
