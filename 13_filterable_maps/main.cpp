@@ -228,7 +228,20 @@ class FilterableMaps final : public Lesson {
                          {"/error/penumbra/vis_mae", "penumbra vis_mae", B::AtMost, 0.175},
                          {"/taps_per_pixel", "lookups a pixel", B::AtMost, 1}},
              .hint = "Chebyshev's bound is too light where two blockers share the filter. Cut "
-                     "its lowest values off, and watch what that does to the penumbra."}};
+                     "its lowest values off, and watch what that does to the penumbra."},
+            {.title = "Less halo in the same bytes (seed 002's other functional forms)",
+             .goal = "The same halo: VSM keeps 8 bytes a texel and bleeds on 0.98 % of the "
+                     "pixels. Bring the bleeding under 0.7 % with the penumbra's vis_mae at "
+                     "0.135 or less, one lookup a pixel and at most 8 bytes a texel.",
+             .setup = {"shadow.size=512", "filter.radius=8"},
+             .allowed = {"filter.method", "moments.bits", "msm.bias", "vsm.bleeding",
+                         "vsm.min_variance", "esm.c"},
+             .figures = {{"/error/bleeding/share_pct", "bleeding %", B::AtMost, 0.7},
+                         {"/error/penumbra/vis_mae", "penumbra vis_mae", B::AtMost, 0.135},
+                         {"/taps_per_pixel", "lookups a pixel", B::AtMost, 1},
+                         {"/moments_bytes_per_texel", "bytes a texel", B::AtMost, 8}},
+             .hint = "Two moments cannot tell two blockers at two depths apart; how many can? "
+                     "And how many bits does each of them need?"}};
   }
 
   // The truth's penumbra, umbra and lit area, as lesson 14 has them, and the light that bleeds:
