@@ -30,6 +30,7 @@
 #include "cascade_math.hpp"
 #include "core/json.hpp"
 #include "lesson/lesson.hpp"
+#include "visible_depths.hpp"
 
 namespace shadows {
 
@@ -37,6 +38,7 @@ namespace {
 constexpr int kMaxCascades = 4;
 constexpr int kShimmerSteps = 8;  // the path: eight steps of 3 cm and 0.1°
 enum class Fit { Slice, Sphere };
+enum class Range { Fixed, Visible };
 enum class Path { Walk, Turn, Both };
 const std::array<glm::vec3, kMaxCascades> kCascadeColors = {
     glm::vec3(0.95f, 0.35f, 0.3f), glm::vec3(0.35f, 0.85f, 0.35f), glm::vec3(0.35f, 0.5f, 0.95f),
@@ -85,6 +87,10 @@ class Cascades final : public Lesson {
     lambda_.param().inactive = [](const Params& ps) -> std::string {
       return ps.at("cascades.split").is("practical") ? "" : "only the practical split has it";
     };
+    range_ = p.addChoice("cascades.range", {"fixed", "visible"}, "fixed",
+                         "fixed: slices from the near plane to cascades.far; visible: over the "
+                         "depths the eye sees this frame, reduced on the GPU (SDSM)",
+                         kDirtyShadowMap);
     fit_ = p.addChoice("cascades.fit", {"slice", "sphere"}, "sphere",
                        "each map's box: the slice's own extent (tight, changes size as the eye "
                        "turns) or a square around its bounding sphere (fixed size)",
@@ -129,6 +135,7 @@ class Cascades final : public Lesson {
                                       commonShaderDir() / "depth_only.frag");
     eye_programs_ = ProgramVariants(commonShaderDir() / "shadow_coord.vert",
                                     lessonFile(LESSON_DIR, "scene.frag"));
+    visible_.init(lessonFile(LESSON_DIR, "depth_range.frag"));
     compare_nearest_ = Sampler::depth(/*compare=*/true, GL_NEAREST);
     compare_linear_ = Sampler::depth(/*compare=*/true, GL_LINEAR);
   }
@@ -153,7 +160,8 @@ class Cascades final : public Lesson {
         mask = all;
         moved_frames_ = 0;
       } else if (f.view != atlas_.view || f.projection != atlas_projection_) {
-        mask = ++moved_frames_ % update_() == 0 ? all : 1;
+        // The depths in view move with the eye, and every slice with them.
+        mask = range_() == Range::Visible || ++moved_frames_ % update_() == 0 ? all : 1;
       }
       // Live, while the eye is dragged: this frame's points in the maps as they were, then as
       // they are (the shimmer of the user's own motion, not of the path).
@@ -163,8 +171,14 @@ class Cascades final : public Lesson {
         readStates(f, atlas_, atlas_.view, live_before_);
       }
       if (mask != 0) {
+        seen_.reset();
+        if (range_() == Range::Visible) {
+          auto timing = f.measure.pass("depth_range");
+          seen_ = visible_.measure(f, f.view);
+          f.measure.count("depth_range_passes", visible_.passes());
+        }
         auto timing = f.measure.pass("shadow");
-        renderAtlas(f, atlas_, f.view, mask);
+        renderAtlas(f, atlas_, f.view, mask, seen_);
       }
       if (live) {
         auto timing = f.measure.pass("shimmer");
@@ -213,6 +227,12 @@ class Cascades final : public Lesson {
     json.value("cascade_fit", fit_.name());
     json.value("cascade_snap", snap_());
     json.value("shadow_distance", far_());
+    json.value("cascade_range", range_.name());
+    // The depths the eye saw, which the slices then covered: none with a fixed range.
+    const char* why =
+        range_() == Range::Fixed ? "cascades.range=fixed: not measured" : "no surface in view";
+    json.figure("visible_depth_near", seen_ ? std::optional<double>(seen_->x) : std::nullopt, why);
+    json.figure("visible_depth_far", seen_ ? std::optional<double>(seen_->y) : std::nullopt, why);
     json.beginArray("cascade_splits");
     for (int i = 0; i <= used_count_; ++i) json.value("", splits_[static_cast<size_t>(i)]);
     json.endArray();
@@ -322,11 +342,19 @@ class Cascades final : public Lesson {
     atlas.view = glm::mat4(0.0f);  // nothing in it yet
   }
 
-  // The slices for the eye `view`, their boxes, and the casters of each into its tile.
-  void renderAtlas(Frame& f, Atlas& atlas, const glm::mat4& view, int mask) {
+  // The slices for the eye `view` (over the depths it sees, where `seen` has them), their
+  // boxes, and the casters of each into its tile.
+  void renderAtlas(Frame& f, Atlas& atlas, const glm::mat4& view, int mask,
+                   std::optional<glm::vec2> seen) {
     used_count_ = count_();
-    const float near = f.scene.camera.near;
-    const float far = std::max(far_(), near * 2.0f);
+    float near = f.scene.camera.near;
+    float far = std::max(far_(), near * 2.0f);
+    if (seen) {
+      // The nearest and farthest visible surfaces a hair inside the slices, never past
+      // cascades.far (a 24-bit depth reads back to about 1e-4 of the distance).
+      near = std::clamp(seen->x * 0.999f, near, far);
+      far = std::clamp(seen->y * 1.001f, near * 1.001f, far);
+    }
     const float lambda = lambda_();
     for (int i = 0; i <= used_count_; ++i) {
       splits_[static_cast<size_t>(i)] =
@@ -496,7 +524,10 @@ class Cascades final : public Lesson {
     for (int k = 0; k <= kShimmerSteps; ++k) {
       const glm::mat4 view = stepView(f.view, k);
       // The far cascades follow the eye every cascades.update-th step, as they would frames.
-      renderAtlas(f, path_atlas_, view, k % update_() == 0 ? (1 << count_()) - 1 : 1);
+      const int mask = k % update_() == 0 || range_() == Range::Visible ? (1 << count_()) - 1 : 1;
+      const std::optional<glm::vec2> seen =
+          range_() == Range::Visible ? visible_.measure(f, view) : std::nullopt;
+      renderAtlas(f, path_atlas_, view, mask, seen);
       readStates(f, path_atlas_, view, now);
       if (k > 0) {
         const auto [c, n] = countFlips(last, now);
@@ -533,6 +564,7 @@ class Cascades final : public Lesson {
   ChoiceParam<cascade::Split> split_;
   ChoiceParam<> filter_;
   ChoiceParam<Fit> fit_;
+  ChoiceParam<Range> range_;
   ChoiceParam<Path> path_;
   FloatParam lambda_, blend_, far_, normal_, depth_bias_, dimming_;
   BoolParam snap_, cache_, off_;
@@ -540,6 +572,8 @@ class Cascades final : public Lesson {
   Sampler compare_nearest_, compare_linear_;
   Atlas atlas_;       // the frame's
   Atlas path_atlas_;  // the shimmer path's steps
+  VisibleDepths visible_;
+  std::optional<glm::vec2> seen_;  // the last depths measured in view (cascades.range=visible)
   int cols_ = 1, rows_ = 1, used_count_ = 0;
   long long moved_frames_ = 0;  // frames the eye alone moved since all cascades were rendered
   std::array<float, kMaxCascades + 1> splits_{};

@@ -2,7 +2,8 @@
 // formulas and the boxes' snapping (cascade_math.hpp); goldens of the shaded and cascade
 // views; the cascade colouring where the splits say; the error bound at the defaults and for
 // suns no other test uses; shimmer with snapped spheres against free slices; each cascade
-// rendered once and culled on its own; the maps kept while nothing moves.
+// rendered once and culled on its own; the maps kept while nothing moves; the slices fitted to
+// the depths in view (cascades.range=visible).
 #include "harness.hpp"
 
 #include <cmath>
@@ -315,6 +316,58 @@ TEST(Lesson12, ThePracticalSplitGivesEverySliceATexelAPixelAndOneMapDoesNot) {
   ASSERT_EQ(uniform.size(), 4u);
   EXPECT_LT(uniform[0], 1.0);
   EXPECT_GT(uniform[1], 10.0 * uniform[0]);
+}
+
+// Issue 60, 3: cascades.range=visible fits the slices to the depths the eye sees, reduced on
+// the GPU (visible_depths.hpp). On torus_pyramid, whose surfaces lie 5 to 16 units away, the
+// fixed range (0.1 to 120) leaves two cascades shading nothing; fitted, all four do, and every
+// counted pixel lies in a slice. The reduction's far is tight: a fixed range that stops half a
+// percent short of it leaves pixels out.
+TEST(Lesson12, AVisibleRangeFitsEverySliceToTheDepthsInView) {
+  auto run = [](const std::vector<std::string>& sets) {
+    auto runner = startLesson(kLesson, sets, 320, 240);
+    runner->renderFrame();
+    runner->measureError();
+    EXPECT_EQ(runner->glErrors(), 0);
+    return testing::report(*runner);
+  };
+  const auto inSlices = [](const nlohmann::ordered_json& r) {
+    long long sum = 0;
+    for (int i = 1; i <= 4; ++i) {
+      sum += r["error"]["cascade_" + std::to_string(i)]["counted_pixels"].get<long long>();
+    }
+    return sum;
+  };
+  const auto fixed = run({"scene=torus_pyramid"});
+  EXPECT_TRUE(fixed["cascade_texels_per_pixel"][3].is_null());
+  EXPECT_TRUE(fixed["visible_depth_far"].is_null());
+  EXPECT_EQ(fixed["visible_depth_far_not_counted"], "cascades.range=fixed: not measured");
+  const auto fitted = run({"scene=torus_pyramid", "cascades.range=visible"});
+  for (int i = 0; i < 4; ++i) EXPECT_FALSE(fitted["cascade_texels_per_pixel"][i].is_null()) << i;
+  const double near = fitted["visible_depth_near"], far = fitted["visible_depth_far"];
+  EXPECT_GT(near, 3.0);
+  EXPECT_LT(far, 30.0);
+  EXPECT_NEAR(fitted["cascade_splits"][0].get<double>(), 0.999 * near, 1e-4);
+  EXPECT_NEAR(fitted["cascade_splits"][4].get<double>(), 1.001 * far, 1e-3);
+  EXPECT_EQ(inSlices(fitted), fitted["error"]["counted_pixels"].get<long long>());
+  const auto onlyThere =
+      run({"scene=torus_pyramid", "cascades.far=" + std::to_string(0.995 * far)});
+  EXPECT_LT(inSlices(onlyThere), onlyThere["error"]["counted_pixels"].get<long long>());
+}
+
+// The reduction costs a depth pass and its steps each time the cascades are fitted, and with a
+// visible range every step of the eye fits them all: the slices move with what it sees.
+TEST(Lesson12, TheVisibleRangeIsMeasuredWhenTheCascadesAreFitted) {
+  auto runner = startLesson(kLesson, {"cascades.range=visible", "cascades.update=3"}, 320, 240);
+  runner->renderFrame();
+  EXPECT_EQ(counter(*runner, "depth_range_passes"), 5);  // 320x240: 80x60, 20x15, 5x4, 2x1
+  EXPECT_EQ(counter(*runner, "cascade_renders"), 4);
+  runner->renderFrame();  // nothing moved: neither
+  EXPECT_EQ(runner->measure().lastFrameCounts().count("depth_range_passes"), 0u);
+  ASSERT_EQ(runner->params().assign("camera.pos=0.5,1.7,7"), "");
+  runner->renderFrame();
+  EXPECT_EQ(counter(*runner, "cascade_renders"), 4) << "not only the first: the range moved";
+  EXPECT_EQ(runner->glErrors(), 0);
 }
 
 // A 2048 map on a 320x240 frame gives the far slices more than 16 texels a pixel (about 29
