@@ -17,11 +17,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 #include "core/json.hpp"
 #include "cube_math.hpp"
 #include "lesson/lesson.hpp"
+#include "tetra_math.hpp"
 
 namespace shadows {
 
@@ -54,9 +56,10 @@ class OmniCube final : public Lesson {
 
   void declare(Params& p) override {
     constexpr auto kMap = kDirtyShadowMap | kDirtyResources;
-    method_ = p.addChoice("omni.method", {"cube", "paraboloid"}, "cube",
+    method_ = p.addChoice("omni.method", {"cube", "paraboloid", "tetrahedron"}, "cube",
                           "cube: six 90° frusta; paraboloid: two hemispheres warped in the vertex "
-                          "shader, as many texels as the cube",
+                          "shader; tetrahedron: four frusta as tiles of one map; as many texels "
+                          "as the cube",
                           kDirtyShadowMap | kDirtyResources);
     size_ = p.addInt("cube.size", 512, 16, 2048, "texels along each face's side", kMap).logScale();
     store_ = p.addChoice("cube.store", kStores, "distance",
@@ -89,6 +92,14 @@ class OmniCube final : public Lesson {
                         "glPolygonOffset factor in each face's pass (slope-scaled; the depth "
                         "store only: a written gl_FragDepth is not offset)",
                         kDirtyShadowMap);
+    // The paraboloids and the tetrahedron are 2D maps of the distance, one pass a map or tile.
+    for (const char* name : {"cube.store", "cube.passes", "cube.seamless"}) {
+      p.at(name).inactive = [](const Params& ps) -> std::string {
+        return ps.at("omni.method").is("cube") ? ""
+                                               : "a cube's only: the paraboloids and the "
+                                                 "tetrahedron store the distance in 2D maps";
+      };
+    }
     slope_.param().inactive = [](const Params& ps) -> std::string {
       return ps.at("cube.store").is("depth") ? ""
                                              : "the distance store writes gl_FragDepth, which "
@@ -130,13 +141,15 @@ class OmniCube final : public Lesson {
     far_ = f.light.far;
     // What the cube (or the paraboloids) can hold: pixels outside it are not counted, as beyond
     // a map's frustum in 03-08 (the lookup calls them lit, in the store's own measure of far).
-    f.light_reach = Frame::LightReach{light_, paraboloid() ? 0.0f : near_, far_,
-                                      !paraboloid() && store_() == Store::Depth};
+    f.light_reach =
+        Frame::LightReach{light_, cube() ? near_ : 0.0f, far_, cube() && store_() == Store::Depth};
     if (off_()) {
       f.measure.count("shadow_map_renders", 0);
       countFaces(f, 0, 0, 0);
     } else if (paraboloid()) {
       renderParaboloids(f);
+    } else if (tetrahedron()) {
+      renderTetrahedron(f);
     } else {
       renderCube(f);
     }
@@ -144,6 +157,7 @@ class OmniCube final : public Lesson {
     auto timing = f.measure.pass("eye", /*countPassed=*/true);
     f.clearTarget(f.shows(kCubeCross) ? glm::vec3(0.08f) : Frame::kSky);
     if (f.shows(kCubeCross)) return drawCross(f);
+    bindTetrahedron();
     cube_.bind(0);
     (filter_.name() == "linear" ? compare_linear_ : compare_nearest_).bind(0);
     cube_.bind(1);
@@ -164,13 +178,18 @@ class OmniCube final : public Lesson {
     f.setLightingUniforms(e, dimming_());
     f.drawObjects(e, Objects::All);
     setSeamlessCubeFiltering(false);  // the GL's default, for every other pass
-    for (int unit = 0; unit < 6; ++unit) Sampler::unbind(unit);
+    for (int unit = 0; unit < 8; ++unit) Sampler::unbind(unit);
   }
 
   // Within two texels of a face's edge, from the light: where filtering reads across a seam.
   std::vector<ErrorRegion> errorRegions() const override {
     const glm::vec3 light = light_;
-    const int size = size_();
+    const int size = size_(), tile = tetra::tileSizeFor(size_());
+    if (tetrahedron()) {
+      return {{"seams", [light, tile](glm::vec4 p) {
+                 return tetra::seamDistanceTexels(glm::vec3(p) - light, tile) < 2.0f;
+               }}};
+    }
     return {{"seams", [light, size](glm::vec4 p) {
                return cube::seamDistanceTexels(glm::vec3(p) - light, size) < 2.0f;
              }}};
@@ -179,6 +198,7 @@ class OmniCube final : public Lesson {
   void report(JsonWriter& json) const override {
     json.value("omni_method", method_.name());
     json.value("paraboloid_size", paraboloid() ? paraboloid_size_ : 0);
+    json.value("tetrahedron_size", tetrahedron() ? tetra_size_ : 0);
     // One pass a face, or one layered pass, and why not the layered one where it was asked for.
     json.value("cube_passes", layered_used_ ? "layered" : "six");
     json.value("cube_passes_fallback", passesFallback());
@@ -191,9 +211,15 @@ class OmniCube final : public Lesson {
     json.value("cube_bytes",
                paraboloid()
                    ? 2LL * paraboloid_size_ * paraboloid_size_ * bytesPerTexel(paraboloid_bits_)
-                   : 6LL * cube_size_ * cube_size_ * bytesPerTexel(cube_bits_));
+               : tetrahedron() ? 4LL * tetra_size_ * tetra_size_ * bytesPerTexel(tetra_bits_)
+                               : 6LL * cube_size_ * cube_size_ * bytesPerTexel(cube_bits_));
     json.beginObject("cube_faces");
     for (int i = 0; i < 6; ++i) json.value(cube::kFaceNames[static_cast<size_t>(i)], faceState(i));
+    json.endObject();
+    json.beginObject("tetrahedron_faces");
+    for (int i = 0; i < tetra::kFaces; ++i) {
+      json.value(tetra::kFaceNames[static_cast<size_t>(i)], tetraState(i));
+    }
     json.endObject();
   }
 
@@ -204,12 +230,20 @@ class OmniCube final : public Lesson {
       return it == counts.end() ? 0LL : it->second;
     };
     std::string faces;
-    for (int i = 0; i < 6; ++i) {
-      faces += std::string(i ? ", " : "") + cube::kFaceNames[static_cast<size_t>(i)] + " " +
-               faceState(i);
+    if (tetrahedron()) {
+      for (int i = 0; i < tetra::kFaces; ++i) {
+        faces += std::string(i ? ", " : "") + tetra::kFaceNames[static_cast<size_t>(i)] + " " +
+                 tetraState(i);
+      }
+      ImGui::TextWrapped("tetrahedron faces: %s", faces.c_str());
+    } else if (cube()) {
+      for (int i = 0; i < 6; ++i) {
+        faces += std::string(i ? ", " : "") + cube::kFaceNames[static_cast<size_t>(i)] + " " +
+                 faceState(i);
+      }
+      ImGui::TextWrapped("cube faces: %s", faces.c_str());
     }
-    ImGui::TextWrapped("cube faces: %s", faces.c_str());
-    ImGui::TextWrapped("this frame rendered %lld face(s); the cube is kept while nothing moves",
+    ImGui::TextWrapped("this frame rendered %lld face(s); the map is kept while nothing moves",
                        count("cube_faces_rendered"));
     if (const std::string why = passesFallback(); !why.empty()) {
       ImGui::TextWrapped("cube.passes: six, %s", why.c_str());
@@ -369,6 +403,10 @@ class OmniCube final : public Lesson {
 
   void drawCross(Frame& f) {
     if (off_()) return;
+    if (tetrahedron()) {  // the map itself: its four tiles, distance over far
+      if (tetra_size_ > 0) f.drawDepthInset(tetra_map_, 0.0f, 1.0f, false, /*fullscreen=*/true);
+      return;
+    }
     cube_.bind(1);
     raw_.bind(1);
     bindParaboloids();
@@ -387,7 +425,17 @@ class OmniCube final : public Lesson {
     p.set("uLightPos", light_);
     p.set("uCubeNear", near_);
     p.set("uCubeFar", far_);
-    p.set("uCubeSize", static_cast<float>(paraboloid() ? paraboloid_size_ : cube_size_));
+    p.set("uCubeSize", static_cast<float>(paraboloid()    ? paraboloid_size_
+                                          : tetrahedron() ? tetra_size_
+                                                          : cube_size_));
+    p.set("uTetra", 6);
+    p.set("uTetraRaw", 7);
+    for (int i = 0; i < tetra::kFaces; ++i) {
+      char at[8];
+      std::snprintf(at, sizeof at, "[%d]", i);
+      p.set(std::string("uTetraFace") + at, tetraFace(i));
+      p.set(std::string("uTetraDir") + at, tetra::faceDirection(i));
+    }
     for (const auto& [name, unit] : {std::pair{"uParaboloidUp", 2},
                                      {"uParaboloidDown", 3},
                                      {"uParaboloidUpRaw", 4},
@@ -397,6 +445,86 @@ class OmniCube final : public Lesson {
   }
 
   bool paraboloid() const { return method_.name() == "paraboloid"; }
+  bool tetrahedron() const { return method_.name() == "tetrahedron"; }
+  bool cube() const { return !paraboloid() && !tetrahedron(); }
+
+  glm::mat4 tetraFace(int i) const {
+    return tetra::faceProjection(i, near_, far_) * tetra::faceView(light_, i);
+  }
+
+  void bindTetrahedron() const {
+    if (!tetrahedron() || tetra_size_ == 0) return;
+    tetra_map_.bind(6);
+    (filter_.name() == "linear" ? compare_linear_ : compare_nearest_).bind(6);
+    tetra_map_.bind(7);
+    raw_.bind(7);
+  }
+
+  // Pass 1 as four faces of a tetrahedron, each its tile of one 2D map (the distance store),
+  // skipped and counted as the cube's faces are: no caster in it, or out of the eye's sight.
+  void renderTetrahedron(Frame& f) {
+    const int bits = std::stoi(bits_.name());
+    const int tile = tetra::tileSizeFor(size_());
+    const bool recreated = tile != tetra_size_ || bits != tetra_bits_;
+    if (recreated) {
+      tetra_map_ = Texture::depth(2 * tile, 2 * tile, bits);
+      tetra_framebuffer_ = std::make_unique<Framebuffer>();
+      tetra_framebuffer_->attachDepth(tetra_map_);
+      tetra_framebuffer_->check();
+      tetra_size_ = tile, tetra_bits_ = bits;
+    }
+    drawn_.fill(false);  // the cube holds nothing current while the tetrahedron is used
+    tetra_framebuffer_->bind();
+    PassState{}.apply();
+    if (f.params.consume(kDirtyShadowMap) || !cache_() || recreated) {
+      glViewport(0, 0, 2 * tile, 2 * tile);
+      glClearDepthf(1.0f);
+      glClear(GL_DEPTH_BUFFER_BIT);
+      tetra_drawn_.fill(false);
+    }
+    const glm::mat4 eye = f.projection * f.view;
+    int rendered = 0, empty = 0, unseen = 0;
+    for (int i = 0; i < tetra::kFaces; ++i) {
+      const auto k = static_cast<size_t>(i);
+      const glm::mat4 face = tetraFace(i);
+      tetra_casters_[k] = !skip_() || anyCasterIn(f, face);
+      tetra_seen_[k] = !skip_() || !cube::frustaDisjoint(face, eye);
+      if (!tetra_casters_[k]) {
+        ++empty;
+      } else if (!tetra_seen_[k]) {
+        ++unseen;
+      } else if (!tetra_drawn_[k]) {
+        renderTetraFace(f, i, face);
+        tetra_drawn_[k] = true;
+        ++rendered;
+      }
+    }
+    f.measure.count("shadow_map_renders", rendered > 0 ? 1 : 0);
+    countFaces(f, rendered, empty, unseen);
+  }
+
+  void renderTetraFace(Frame& f, int i, const glm::mat4& face) {
+    auto timing = f.measure.pass("shadow");
+    tetra_framebuffer_->bind();
+    const glm::ivec2 at = glm::ivec2(tetra::tileOffset(i) * 2.0f) * tetra_size_;
+    glViewport(at.x, at.y, tetra_size_, tetra_size_);
+    passBias().apply();
+    const Program& d = depth_programs_.get({choiceDefines("cube.store", kStores, "distance")});
+    d.set("uLightViewProjection", face);
+    d.set("uLightPos", light_);
+    d.set("uCubeFar", far_);
+    f.drawObjects(d, Objects::Casters, skip_() ? &face : nullptr);
+    PassState{}.apply();
+  }
+
+  std::string tetraState(int i) const {
+    const auto k = static_cast<size_t>(i);
+    if (!tetrahedron()) return "off";
+    return tetra_drawn_[k]      ? "rendered"
+           : !tetra_casters_[k] ? "empty"
+           : !tetra_seen_[k]    ? "unseen"
+                                : "off";
+  }
 
   // Dual paraboloids at the cube's texel count: two p x p maps for six s x s faces, p = s √3.
   int paraboloidSize() const {
@@ -465,6 +593,7 @@ class OmniCube final : public Lesson {
 
   std::string faceState(int i) const {
     const auto k = static_cast<size_t>(i);
+    if (!cube()) return "off";  // another method's map is in use
     return drawn_[k] ? "rendered" : !has_casters_[k] ? "empty" : !seen_[k] ? "unseen" : "off";
   }
 
@@ -484,6 +613,10 @@ class OmniCube final : public Lesson {
   std::array<Texture, 2> paraboloids_;  // omni.method=paraboloid: +y, -y
   std::array<std::unique_ptr<Framebuffer>, 2> paraboloid_framebuffers_;
   int paraboloid_size_ = 0, paraboloid_bits_ = 0;
+  Texture tetra_map_;  // omni.method=tetrahedron: four tiles, 2 x 2
+  std::unique_ptr<Framebuffer> tetra_framebuffer_;
+  int tetra_size_ = 0, tetra_bits_ = 0;
+  std::array<bool, tetra::kFaces> tetra_drawn_{}, tetra_casters_{}, tetra_seen_{};
   int cube_size_ = 0, cube_bits_ = 0;
   std::array<bool, 6> drawn_{}, has_casters_{}, seen_{};
   glm::vec3 light_{0.0f};

@@ -17,6 +17,10 @@ uniform sampler2DShadow uParaboloidDown;
 uniform sampler2D uParaboloidUpRaw;       // the same two, read raw for the views
 uniform sampler2D uParaboloidDownRaw;
 uniform samplerCube uCubeRaw;     // the same texture read raw, for the views
+uniform sampler2DShadow uTetra;   // omni.method=tetrahedron: four faces' tiles in one map
+uniform sampler2D uTetraRaw;
+uniform mat4 uTetraFace[4];       // each face's P * V (tetra_math.hpp)
+uniform vec3 uTetraDir[4];        // each face's direction
 uniform float uBiasWorld;         // world units, along the ray (distance) or the axis (depth)
 uniform float uBiasNormal;        // texels, along the normal
 uniform vec3 uColor;
@@ -52,10 +56,33 @@ float paraboloidTerm(vec3 v) {
   return s > 0.0 ? texture(uParaboloidUp, c) : texture(uParaboloidDown, c);
 }
 
+// The tetrahedron's face of v (the nearest face direction) and its texel: that face's
+// projection into its tile of the 2 x 2 map, as tetra_math.hpp's mapCoord.
+int tetraFace(vec3 v) {
+  int best = 0;
+  for (int i = 1; i < 4; ++i) {
+    if (dot(v, uTetraDir[i]) > dot(v, uTetraDir[best])) best = i;
+  }
+  return best;
+}
+const int kTetraColour[4] = int[4](3, 0, 2, 4);  // faceColor's: down dark green, the others bright
+vec2 tetraTile(int face) { return 0.5 * vec2(face % 2, face / 2); }
+vec2 tetraCoord(vec3 v, int face) {
+  vec4 c = uTetraFace[face] * vec4(uLightPos + v, 1.0);
+  return tetraTile(face) + 0.25 * (c.xy / c.w + 1.0);
+}
+float tetraTerm(vec3 v) {
+  float len = length(v);
+  if (len >= uCubeFar) return 1.0;
+  return texture(uTetra, vec3(tetraCoord(v, tetraFace(v)), (len - uBiasWorld) / uCubeFar));
+}
+
 float shadowTerm(vec3 n) {
   vec3 v = offsetPosition(n) - uLightPos;
 #if OMNI_METHOD == OMNI_METHOD_PARABOLOID
   return paraboloidTerm(v);
+#elif OMNI_METHOD == OMNI_METHOD_TETRAHEDRON
+  return tetraTerm(v);
 #else
   // Beyond far nothing was stored: unshadowed, in each store's own measure of far (a float
   // depth would not clamp a reference past 1 as the fixed-point formats do).
@@ -91,6 +118,8 @@ void main() {
   vec3 v = vWorld - uLightPos;
 #if OMNI_METHOD == OMNI_METHOD_PARABOLOID
   int face = v.y >= 0.0 ? 2 : 3;  // the two hemispheres, coloured as +y and -y
+#elif OMNI_METHOD == OMNI_METHOD_TETRAHEDRON
+  int face = kTetraColour[tetraFace(v)];
 #else
   int face = majorFace(v);
 #endif
@@ -101,6 +130,9 @@ void main() {
   vec3 a = abs(v);
 #if OMNI_METHOD == OMNI_METHOD_PARABOLOID
   vec2 st = vec2(v.x, v.z) / (length(v) + (v.y >= 0.0 ? v.y : -v.y));
+#elif OMNI_METHOD == OMNI_METHOD_TETRAHEDRON
+  int tf = tetraFace(v);
+  vec2 st = 4.0 * (tetraCoord(v, tf) - tetraTile(tf)) - 1.0;  // -1 .. 1 across the tile
 #else
   int f = majorFace(v);
   vec2 st = f < 2 ? v.yz / a.x : (f < 4 ? v.xz / a.y : v.xy / a.z);
@@ -119,6 +151,8 @@ void main() {
   float s = v.y >= 0.0 ? 1.0 : -1.0;
   vec2 uv = 0.5 * vec2(s * v.x, v.z) / (length(v) + s * v.y) + 0.5;
   float stored = s > 0.0 ? texture(uParaboloidUpRaw, uv).r : texture(uParaboloidDownRaw, uv).r;
+#elif OMNI_METHOD == OMNI_METHOD_TETRAHEDRON
+  float stored = texture(uTetraRaw, tetraCoord(v, tetraFace(v))).r;
 #else
   float stored = texture(uCubeRaw, v).r;
 #endif
