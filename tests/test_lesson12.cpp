@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "../12_cascades/cascade_math.hpp"
+#include "../12_cascades/visible_depths.hpp"
 
 namespace shadows {
 namespace {
@@ -78,6 +79,17 @@ TEST(CascadeMath, ASnappedSphereBoxKeepsItsSizeAndMovesByWholeTexelsWhateverTheE
 // The shimmer pass's texels per pixel in bytes (scene.frag's VIEW_SHIMMER, mirrored): any value
 // from 2^-16 to 2^16 comes back within a step (0.07 %), its bytes keep the sunlit bit, and
 // nothing clamps at the 16 (or 1/16) an 8-bit level over [-4, 4] did (issue 53, 7).
+// The reduction reads window depths back; viewDepth turns them into the view depths the splits
+// need, the inverse of the eye's glm::perspective.
+TEST(CascadeMath, AWindowDepthReadsBackAsItsViewDepth) {
+  const glm::mat4 projection = glm::perspective(glm::radians(60.0f), 4.0f / 3.0f, 0.1f, 250.0f);
+  for (const float d : {0.1f, 0.5f, 3.55f, 15.9f, 120.0f, 249.0f}) {
+    const glm::vec4 clip = projection * glm::vec4(0.0f, 0.0f, -d, 1.0f);
+    const float window = 0.5f * clip.z / clip.w + 0.5f;
+    EXPECT_NEAR(VisibleDepths::viewDepth(projection, window), d, 1e-5f * d * d) << d;
+  }
+}
+
 TEST(CascadeMath, TexelsPerPixelGoThroughTheirBytesWithinAStep) {
   for (const double texels :
        {1.0 / 60000, 0.01, 1.0 / 16, 0.3, 1.0, 1.704, 13.7, 16.0, 40.0, 900.0, 60000.0}) {
