@@ -87,6 +87,7 @@ class Atmospherics final : public Lesson {
                    : density_() > 0.0f || neutralCodeKept("AIR_SLICES")
                        ? ""
                        : "air.density=0: no dust scatters light, no slice is drawn";
+    if (!air_skipped_.empty()) f.measure.count("air_slices", 0);
     // 1. The shadow map, lesson 04's default bias (back faces + glPolygonOffset(1.1, 4)). Every
     // object goes in, the floor and walls too: they cast nothing on a surface, but they shadow
     // the air behind them (the dust beneath the floor, seen from below it).
@@ -120,11 +121,7 @@ class Atmospherics final : public Lesson {
       f.drawObjects(room, Objects::All);
     }
     // 4. The air.
-    if (air_skipped_.empty()) {
-      drawSlices(f, cone);
-    } else {
-      f.measure.count("air_slices", 0);
-    }
+    if (air_skipped_.empty()) drawSlices(f, cone);
     if (f.shows(views::kShaded) || f.shows(kSurfaces)) map_.drawInset(f);
   }
 

@@ -141,8 +141,13 @@ class OmniCube final : public Lesson {
     far_ = f.light.far;
     // What the cube (or the paraboloids) can hold: pixels outside it are not counted, as beyond
     // a map's frustum in 03-08 (the lookup calls them lit, in the store's own measure of far).
-    f.light_reach =
-        Frame::LightReach{light_, cube() ? near_ : 0.0f, far_, cube() && store_() == Store::Depth};
+    // A tetrahedron's faces clip at near along their own axes, which lie within 1/3 of the
+    // distance (70.5 degrees) of a point: beyond 3 near along the cube's major axis, held.
+    f.light_reach = Frame::LightReach{light_,
+                                      cube()          ? near_
+                                      : tetrahedron() ? 3.0f * near_
+                                                      : 0.0f,
+                                      far_, cube() && store_() == Store::Depth};
     if (off_()) {
       f.measure.count("shadow_map_renders", 0);
       countFaces(f, 0, 0, 0);
@@ -429,6 +434,7 @@ class OmniCube final : public Lesson {
                                           : tetrahedron() ? tetra_size_
                                                           : cube_size_));
     p.set("uTetra", 6);
+    p.set("uTetraTexel", tetra::texelAtUnitDistance(std::max(tetra_size_, 1)));
     p.set("uTetraRaw", 7);
     for (int i = 0; i < tetra::kFaces; ++i) {
       char at[8];

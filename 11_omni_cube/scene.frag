@@ -21,17 +21,40 @@ uniform sampler2DShadow uTetra;   // omni.method=tetrahedron: four faces' tiles 
 uniform sampler2D uTetraRaw;
 uniform mat4 uTetraFace[4];       // each face's P * V (tetra_math.hpp)
 uniform vec3 uTetraDir[4];        // each face's direction
+uniform float uTetraTexel;        // a tile's texel on its image plane at distance 1 (the wider side)
 uniform float uBiasWorld;         // world units, along the ray (distance) or the axis (depth)
 uniform float uBiasNormal;        // texels, along the normal
 uniform vec3 uColor;
 out vec4 outColor;
+
+// The tetrahedron's face of v (the nearest face direction) and its texel: that face's
+// projection into its tile of the 2 x 2 map, as tetra_math.hpp's mapCoord.
+int tetraFace(vec3 v) {
+  int best = 0;
+  for (int i = 1; i < 4; ++i) {
+    if (dot(v, uTetraDir[i]) > dot(v, uTetraDir[best])) best = i;
+  }
+  return best;
+}
+const int kTetraColour[4] = int[4](3, 0, 2, 4);  // faceColor's: down dark green, the others bright
+vec2 tetraTile(int face) { return 0.5 * vec2(face % 2, face / 2); }
+vec2 tetraCoord(vec3 v, int face) {
+  vec4 c = uTetraFace[face] * vec4(uLightPos + v, 1.0);
+  return tetraTile(face) + 0.25 * (c.xy / c.w + 1.0);
+}
 
 vec3 offsetPosition(vec3 n) {
 #if NORMAL_OFFSET
   vec3 v = vWorld - uLightPos;
   // Toward the light's side of the surface, by a texel's size here.
   float side = dot(n, v) > 0.0 ? -1.0 : 1.0;
-  return vWorld + side * n * uBiasNormal * texelWorldSize(majorDistance(v));
+#if OMNI_METHOD == OMNI_METHOD_TETRAHEDRON
+  // A tile's texel at v: its image plane's width over the tile, at v's distance along the face.
+  float texel = uTetraTexel * dot(v, uTetraDir[tetraFace(v)]);
+#else
+  float texel = texelWorldSize(majorDistance(v));
+#endif
+  return vWorld + side * n * uBiasNormal * texel;
 #else
   return vWorld;  // bias.normal=0: the same point, without the 5 M a frame of finding it
 #endif
@@ -56,21 +79,6 @@ float paraboloidTerm(vec3 v) {
   return s > 0.0 ? texture(uParaboloidUp, c) : texture(uParaboloidDown, c);
 }
 
-// The tetrahedron's face of v (the nearest face direction) and its texel: that face's
-// projection into its tile of the 2 x 2 map, as tetra_math.hpp's mapCoord.
-int tetraFace(vec3 v) {
-  int best = 0;
-  for (int i = 1; i < 4; ++i) {
-    if (dot(v, uTetraDir[i]) > dot(v, uTetraDir[best])) best = i;
-  }
-  return best;
-}
-const int kTetraColour[4] = int[4](3, 0, 2, 4);  // faceColor's: down dark green, the others bright
-vec2 tetraTile(int face) { return 0.5 * vec2(face % 2, face / 2); }
-vec2 tetraCoord(vec3 v, int face) {
-  vec4 c = uTetraFace[face] * vec4(uLightPos + v, 1.0);
-  return tetraTile(face) + 0.25 * (c.xy / c.w + 1.0);
-}
 float tetraTerm(vec3 v) {
   float len = length(v);
   if (len >= uCubeFar) return 1.0;

@@ -88,6 +88,13 @@ inline int tileSizeFor(int cubeSize) {
   return static_cast<int>(std::lround(static_cast<double>(cubeSize) * std::sqrt(1.5)));
 }
 
+// A tile's texel on its face's image plane at distance 1, the wider of its two sides: a texel's
+// world size at distance d along the face's axis is d times this (the normal offset's unit).
+inline float texelAtUnitDistance(int tile) {
+  const glm::vec4 bounds = faceBounds(0);
+  return std::max(bounds.y - bounds.x, bounds.w - bounds.z) / static_cast<float>(tile);
+}
+
 // How many texels of its tile v lies from the edge of its face's triangle (its seam with the
 // next face), measured on the image plane in the tile's texels (the wider of the two axes').
 inline float seamDistanceTexels(glm::vec3 v, int tile) {
@@ -100,9 +107,7 @@ inline float seamDistanceTexels(glm::vec3 v, int tile) {
     const glm::vec2 a = c[k], b = c[(k + 1) % 3], e = b - a;
     d = std::min(d, std::abs(e.x * (p.y - a.y) - e.y * (p.x - a.x)) / glm::length(e));
   }
-  const glm::vec4 bounds = faceBounds(face);
-  const float texel = std::max(bounds.y - bounds.x, bounds.w - bounds.z) / static_cast<float>(tile);
-  return d / texel;
+  return d / texelAtUnitDistance(tile);
 }
 
 }  // namespace shadows::tetra

@@ -229,10 +229,12 @@ class Cascades final : public Lesson {
     json.value("shadow_distance", far_());
     json.value("cascade_range", range_.name());
     // The depths the eye saw, which the slices then covered: none with a fixed range.
-    const char* why =
-        range_() == Range::Fixed ? "cascades.range=fixed: not measured" : "no surface in view";
-    json.figure("visible_depth_near", seen_ ? std::optional<double>(seen_->x) : std::nullopt, why);
-    json.figure("visible_depth_far", seen_ ? std::optional<double>(seen_->y) : std::nullopt, why);
+    const char* why = off_()                     ? "shadow.off: no cascade is rendered"
+                      : range_() == Range::Fixed ? "cascades.range=fixed: not measured"
+                                                 : "no surface in view";
+    const std::optional<glm::vec2> seen = off_() ? std::nullopt : seen_;
+    json.figure("visible_depth_near", seen ? std::optional<double>(seen->x) : std::nullopt, why);
+    json.figure("visible_depth_far", seen ? std::optional<double>(seen->y) : std::nullopt, why);
     json.beginArray("cascade_splits");
     for (int i = 0; i <= used_count_; ++i) json.value("", splits_[static_cast<size_t>(i)]);
     json.endArray();
@@ -257,6 +259,20 @@ class Cascades final : public Lesson {
       json.value("cascade_texels_per_pixel_not_counted",
                  "cascade " + none + ": no sunlit pixel in the frame reads it");
     }
+    // The same as two figures an exercise can bound: how many cascades shade a sunlit pixel,
+    // and the least texels a pixel among them (none while a cascade shades nothing).
+    int shading = 0;
+    double least = 1e30;
+    for (int i = 0; i < used_count_; ++i) {
+      if (const std::optional<double> t = texels_per_pixel_[static_cast<size_t>(i)]) {
+        ++shading, least = std::min(least, *t);
+      }
+    }
+    json.value("cascades_shading", off_() ? 0 : shading);
+    json.figure("cascade_texels_per_pixel_least",
+                off_() || !none.empty() || shading == 0 ? std::nullopt : std::optional(least),
+                off_() ? "shadow.off: no cascade is rendered"
+                       : "cascade " + none + ": no sunlit pixel in the frame reads it");
     json.value("atlas_bytes",
                static_cast<long long>(atlas_.texture.width()) * atlas_.texture.height() * 4);
     json.value("shimmer_path", path_.name());
@@ -298,35 +314,53 @@ class Cascades final : public Lesson {
       slices += line;
     }
     ImGui::TextWrapped("cascades: %s", slices.c_str());
+    if (range_() == Range::Visible) {
+      if (seen_) {
+        ImGui::TextWrapped("surfaces in view: %.2f-%.2f m (the slices cover them)", seen_->x,
+                           seen_->y);
+      } else {
+        ImGui::TextWrapped("surfaces in view: none (the slices cover the fixed range)");
+      }
+    }
   }
 
   // instructor/SOLUTIONS.md has the intended solutions (kept off the students' site).
   std::vector<Exercise> exercises() const override {
     using B = Figure::Bound;
-    return {{.title = "Stop the crawl",
-             .goal = "Boxes fitted to their slices and moved freely make the shadows' edges "
-                     "crawl: 0.058 % of the sunlit pixels flip at each step of the eye's walk "
-                     "and turn, where the truth flips none. Bring the shimmer to 0.01 % or less "
-                     "with the same texels, false shadow and false lit at most 0.2 % each.",
-             .setup = {"cascades.fit=slice", "cascades.snap=false"},
-             .allowed = {"cascades.fit", "cascades.snap", "cascades.blend", "bias.normal",
-                         "bias.depth"},
-             .figures = {{"/shimmer_pct", "shimmer %", B::AtMost, 0.01},
-                         {"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.2},
-                         {"/error/false_lit_pct", "false lit %", B::AtMost, 0.2}},
-             .hint = "What changes a box's size as the eye turns, and where can it move to?"},
-            {.title = "Where the texels go",
-             .goal = "Two cascades of 256 texels split evenly give the slice at the eye's feet "
-                     "60 metres, 43 cm a texel: 0.39 % false shadow and 0.66 % false lit. With "
-                     "the same two maps over the same 120 metres, bring each to 0.3 % or less.",
-             .setup = {"cascades.count=2", "cascades.size=256", "cascades.split=uniform"},
-             // Not cascades.far: shadows past the last cascade are dropped, and a far of 30
-             // metres met the goal by covering less, not by placing the texels.
-             .allowed = {"cascades.split", "cascades.lambda", "bias.normal", "bias.depth"},
-             .figures = {{"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.3},
-                         {"/error/false_lit_pct", "false lit %", B::AtMost, 0.3}},
-             .hint = "Texels per metre should fall with distance as the eye's pixels per metre "
-                     "do."}};
+    return {
+        {.title = "Stop the crawl",
+         .goal = "Boxes fitted to their slices and moved freely make the shadows' edges "
+                 "crawl: 0.058 % of the sunlit pixels flip at each step of the eye's walk "
+                 "and turn, where the truth flips none. Bring the shimmer to 0.01 % or less "
+                 "with the same texels, false shadow and false lit at most 0.2 % each.",
+         .setup = {"cascades.fit=slice", "cascades.snap=false"},
+         .allowed = {"cascades.fit", "cascades.snap", "cascades.blend", "bias.normal",
+                     "bias.depth"},
+         .figures = {{"/shimmer_pct", "shimmer %", B::AtMost, 0.01},
+                     {"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.2},
+                     {"/error/false_lit_pct", "false lit %", B::AtMost, 0.2}},
+         .hint = "What changes a box's size as the eye turns, and where can it move to?"},
+        {.title = "Where the texels go",
+         .goal = "Two cascades of 256 texels split evenly give the slice at the eye's feet "
+                 "60 metres, 43 cm a texel: 0.39 % false shadow and 0.66 % false lit. With "
+                 "the same two maps over the same 120 metres, bring each to 0.3 % or less.",
+         .setup = {"cascades.count=2", "cascades.size=256", "cascades.split=uniform"},
+         // Not cascades.far: shadows past the last cascade are dropped, and a far of 30
+         // metres met the goal by covering less, not by placing the texels.
+         .allowed = {"cascades.split", "cascades.lambda", "bias.normal", "bias.depth"},
+         .figures = {{"/error/false_shadow_pct", "false shadow %", B::AtMost, 0.3},
+                     {"/error/false_lit_pct", "false lit %", B::AtMost, 0.3}},
+         .hint = "Texels per metre should fall with distance as the eye's pixels per metre "
+                 "do."},
+        {.title = "Four maps, four slices in use",
+         .goal = "On torus_pyramid every surface lies 5 to 16 metres from the eye, and the "
+                 "slices from the near plane to 120 metres leave cascades 3 and 4 shading "
+                 "nothing. Put all four to work, each at 1.2 texels a pixel or more.",
+         .setup = {"scene=torus_pyramid"},
+         .allowed = {"cascades.range", "cascades.far", "cascades.split", "cascades.lambda"},
+         .figures = {{"/cascades_shading", "cascades shading pixels", B::AtLeast, 4},
+                     {"/cascade_texels_per_pixel_least", "least texels a pixel", B::AtLeast, 1.2}},
+         .hint = "Where do the slices start and end, and where are the surfaces?"}};
   }
 
  private:
@@ -349,10 +383,11 @@ class Cascades final : public Lesson {
     used_count_ = count_();
     float near = f.scene.camera.near;
     float far = std::max(far_(), near * 2.0f);
-    if (seen) {
-      // The nearest and farthest visible surfaces a hair inside the slices, never past
-      // cascades.far (a 24-bit depth reads back to about 1e-4 of the distance).
-      near = std::clamp(seen->x * 0.999f, near, far);
+    // The nearest and farthest visible surfaces a hair inside the slices, never past
+    // cascades.far (a 24-bit depth reads back to about 1e-4 of the distance); where every
+    // surface lies beyond it, the fixed range.
+    if (seen && seen->x * 0.999f < far) {
+      near = std::max(seen->x * 0.999f, near);
       far = std::clamp(seen->y * 1.001f, near * 1.001f, far);
     }
     const float lambda = lambda_();
@@ -519,6 +554,9 @@ class Cascades final : public Lesson {
   void measureShimmer(Frame& f) {
     auto timing = f.measure.pass("shimmer");
     ensureAtlas(path_atlas_);  // its own: the frame's atlas and what it keeps stay as they are
+    // The path's slices are its own too: the frame's atlas keeps the slices it was fitted for.
+    const auto splits = splits_;
+    const int count = used_count_;
     std::vector<unsigned char> last, now;
     long long flips = 0, counted = 0;
     for (int k = 0; k <= kShimmerSteps; ++k) {
@@ -540,6 +578,8 @@ class Cascades final : public Lesson {
     shimmer_pct_ = counted > 0 ? std::optional<double>(100.0 * static_cast<double>(flips) /
                                                        static_cast<double>(counted))
                                : std::nullopt;
+    splits_ = splits;
+    used_count_ = count;
   }
 
   // The median texels per pixel of each cascade over the sunlit pixels it shades (the eye's

@@ -39,7 +39,7 @@ class VisibleDepths {
     const Program& d = depth_program_.get({});
     const glm::mat4 eye = f.projection * view;
     d.set("uLightViewProjection", eye);
-    f.drawObjects(d, Objects::All, &eye);
+    f.drawObjects(d, Objects::All);  // unculled: culled_objects counts the cascades' culls
     passes_ = 1;
     // Each step a quarter of the last one's width and height, until at most 4x4 are left.
     const Texture* source = &depth_;

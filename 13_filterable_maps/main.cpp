@@ -193,8 +193,8 @@ class FilterableMaps final : public Lesson {
     } else {
       ImGui::TextWrapped(
           "cost: 1 lookup a pixel; the blur 2 x %d taps a texel, once per map "
-          "(%d moments of %d bits: %d bytes a texel)",
-          n, channels(), bits_used_, bytesPerTexel());
+          "(%s of %d bits: %d bytes a texel)",
+          n, stored(), bits_used_, bytesPerTexel());
     }
     const ErrorState& error = f.runner.lastError();
     if (error.valid) {
@@ -257,7 +257,9 @@ class FilterableMaps final : public Lesson {
     json.value("truth_area_radius", match_.radius);
     json.value("kernel_half_width_texels", kernel_texels_);
     json.value("moments_bits_used", method_() == Method::Pcf ? 0 : bits_used_);
-    json.value("moments_bytes_per_texel", method_() == Method::Pcf ? 0 : bytesPerTexel());
+    json.figure("moments_bytes_per_texel",
+                method_() == Method::Pcf ? std::nullopt : std::optional<double>(bytesPerTexel()),
+                "filter.method=pcf: no moments (a depth map, compared)");
     // What the lookup filters with: the levels (1: bilinear; more: trilinear) and anisotropy.
     json.value("moments_levels", method_() == Method::Pcf ? 0 : moments_[kBlurred].levels());
     json.value("anisotropy_used", method_() != Method::Pcf && mipmaps_()
@@ -273,6 +275,11 @@ class FilterableMaps final : public Lesson {
   // The channels a method's moments take (ESM fills one of two), and their bytes a texel.
   int channels() const { return method_() == Method::Msm ? 4 : 2; }
   int bytesPerTexel() const { return channels() * bits_used_ / 8; }
+  const char* stored() const {
+    return method_() == Method::Msm   ? "4 moments"
+           : method_() == Method::Vsm ? "2 moments"
+                                      : "exp(c z) in 2 channels";
+  }
   static constexpr float kAnisotropy = 16.0f;
   bool ensureMoments(int width, int height) {
     const bool four = method_() == Method::Msm;

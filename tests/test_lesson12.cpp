@@ -365,6 +365,10 @@ TEST(Lesson12, AVisibleRangeFitsEverySliceToTheDepthsInView) {
   const auto onlyThere =
       run({"scene=torus_pyramid", "cascades.far=" + std::to_string(0.995 * far)});
   EXPECT_LT(inSlices(onlyThere), onlyThere["error"]["counted_pixels"].get<long long>());
+  // Every surface beyond cascades.far (5, the slider's least): the fixed range, still clean.
+  const auto beyond = run({"scene=torus_pyramid", "cascades.range=visible", "cascades.far=5"});
+  EXPECT_NEAR(beyond["cascade_splits"][4].get<double>(), 5.0, 1e-6);
+  EXPECT_GT(beyond["cascade_splits"][1].get<double>(), beyond["cascade_splits"][0].get<double>());
 }
 
 // The reduction costs a depth pass and its steps each time the cascades are fitted, and with a
