@@ -17,12 +17,15 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <string>
 #include <utility>
 
 #include "core/json.hpp"
 #include "cube_math.hpp"
 #include "lesson/lesson.hpp"
+#include "math/texel_density.hpp"
 #include "tetra_math.hpp"
 
 namespace shadows {
@@ -43,6 +46,7 @@ class OmniCube final : public Lesson {
   static constexpr View kFace{"face"};
   static constexpr View kFaceTexels{"face_texels"};
   static constexpr View kDistance{"distance"};
+  static constexpr View kTexelStats{"texel_stats"};  // measureTexels' pass, never offered
   std::vector<View> debugViews() const override {
     return {kCubeCross, kFace, kFaceTexels, kDistance};
   }
@@ -159,9 +163,32 @@ class OmniCube final : public Lesson {
       renderCube(f);
     }
 
-    auto timing = f.measure.pass("eye", /*countPassed=*/true);
-    f.clearTarget(f.shows(kCubeCross) ? glm::vec3(0.08f) : Frame::kSky);
-    if (f.shows(kCubeCross)) return drawCross(f);
+    {
+      auto timing = f.measure.pass("eye", /*countPassed=*/true);
+      f.clearTarget(f.shows(kCubeCross) ? glm::vec3(0.08f) : Frame::kSky);
+      if (f.shows(kCubeCross)) return drawCross(f);
+      drawEye(f, viewDefines(f, f.shown.str()));
+    }
+    // Where the faces' texels land on the screen, once the eye rests (as the runner's texel
+    // pass does for a 2D map): the report's texels_per_pixel.
+    if (!off_() && !f.input_moving && texelKey(f) != texel_key_) {
+      auto texels = f.measure.pass("texels");
+      measureTexels(f);
+    }
+  }
+
+  // Frame::viewDefines with the texel pass's own view among them, so that every variant
+  // defines VIEW_TEXEL_STATS (an undefined macro in #if is an error on ES).
+  static std::vector<std::string> viewDefines(const Frame& f, const std::string& view) {
+    std::vector<std::string> views = f.params.at("view").choices;
+    for (const std::string& hidden : {f.shown.str(), kTexelStats.str()}) {
+      if (std::find(views.begin(), views.end(), hidden) == views.end()) views.push_back(hidden);
+    }
+    return choiceDefines("view", views, view);
+  }
+
+  // The eye's pass with the view `viewDefines`: the map bound, every uniform set.
+  void drawEye(Frame& f, const std::vector<std::string>& viewDefines) {
     bindTetrahedron();
     cube_.bind(0);
     (filter_.name() == "linear" ? compare_linear_ : compare_nearest_).bind(0);
@@ -170,7 +197,7 @@ class OmniCube final : public Lesson {
     bindParaboloids();
     // Desktop GL filters each face on its own unless told; ES and WebGL always across.
     setSeamlessCubeFiltering(seamless_());
-    const Program& e = eye_programs_.get({method_.defines(), store_.defines(), f.viewDefines(),
+    const Program& e = eye_programs_.get({method_.defines(), store_.defines(), viewDefines,
                                           define("SHADOW_OFF", off_()),
                                           feature("NORMAL_OFFSET", normal_() > 0.0f)});
     e.set("uViewProjection", f.projection * f.view);
@@ -184,6 +211,47 @@ class OmniCube final : public Lesson {
     f.drawObjects(e, Objects::All);
     setSeamlessCubeFiltering(false);  // the GL's default, for every other pass
     for (int unit = 0; unit < 8; ++unit) Sampler::unbind(unit);
+  }
+
+  // What the texels per pixel depend on: the method and its texels, the light, the eye, the
+  // frame's size and where the objects are (their matrices, hashed).
+  std::string texelKey(const Frame& f) const {
+    std::uint64_t hash = 1469598103934665603ULL;  // FNV-1a
+    const auto mix = [&](const void* data, size_t size) {
+      const auto* bytes = static_cast<const unsigned char*>(data);
+      for (size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ULL;
+    };
+    for (const SceneObject& o : f.scene.objects) mix(&o.model, sizeof o.model);
+    const glm::mat4 eye = f.projection * f.view;
+    mix(&eye, sizeof eye);
+    const glm::vec4 light(light_, far_);
+    mix(&light, sizeof light);
+    return method_.name() + " " + std::to_string(size_()) + " " + std::to_string(f.width) + "x" +
+           std::to_string(f.height) + " " + std::to_string(hash);
+  }
+
+  // The eye's pixels drawn with the hidden texel_stats view into a float target and read back:
+  // the least and most texels a pixel spans on the face it reads (scene.frag).
+  void measureTexels(Frame& f) {
+    if (texel_target_w_ != f.width || texel_target_h_ != f.height) {
+      texel_color_ = Texture::color(f.width, f.height, GL_RGBA32F);
+      texel_depth_ = Texture::depth(f.width, f.height, 24);
+      texel_target_ = std::make_unique<Framebuffer>();
+      texel_target_->attachColor(texel_color_);
+      texel_target_->attachDepth(texel_depth_);
+      texel_target_->check();
+      texel_target_w_ = f.width, texel_target_h_ = f.height;
+    }
+    texel_target_->bind();
+    glViewport(0, 0, f.width, f.height);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    drawEye(f, viewDefines(f, kTexelStats.str()));
+    std::vector<TexelPixel> pixels(static_cast<size_t>(f.width) * static_cast<size_t>(f.height));
+    glReadPixels(0, 0, f.width, f.height, GL_RGBA, GL_FLOAT, pixels.data());
+    f.bindTarget();
+    texel_stats_ = texelStats(pixels);
+    texel_key_ = texelKey(f);
   }
 
   // Within two texels of a face's edge, from the light: where filtering reads across a seam.
@@ -202,6 +270,12 @@ class OmniCube final : public Lesson {
 
   void report(JsonWriter& json) const override {
     json.value("omni_method", method_.name());
+    // The faces' texels on the screen (as the runner gives a 2D map's): none with shadow.off.
+    if (!off_() && !texel_key_.empty()) {
+      writeTexelsPerPixel(json, texel_stats_);
+      json.value("undersampled_pct",
+                 texel_stats_.pixels > 0 ? texel_stats_.undersampled_pct : kNoFigure);
+    }
     json.value("paraboloid_size", paraboloid() ? paraboloid_size_ : 0);
     json.value("tetrahedron_size", tetrahedron() ? tetra_size_ : 0);
     // One pass a face, or one layered pass, and why not the layered one where it was asked for.
@@ -434,13 +508,15 @@ class OmniCube final : public Lesson {
                                           : tetrahedron() ? tetra_size_
                                                           : cube_size_));
     p.set("uTetra", 6);
-    p.set("uTetraTexel", tetra::texelAtUnitDistance(std::max(tetra_size_, 1)));
     p.set("uTetraRaw", 7);
-    for (int i = 0; i < tetra::kFaces; ++i) {
-      char at[8];
-      std::snprintf(at, sizeof at, "[%d]", i);
-      p.set(std::string("uTetraFace") + at, tetraFace(i));
-      p.set(std::string("uTetraDir") + at, tetra::faceDirection(i));
+    if (tetrahedron()) {  // the faces' matrices only where they are read
+      p.set("uTetraTexel", tetra::texelAtUnitDistance(std::max(tetra_size_, 1)));
+      for (int i = 0; i < tetra::kFaces; ++i) {
+        char at[8];
+        std::snprintf(at, sizeof at, "[%d]", i);
+        p.set(std::string("uTetraFace") + at, tetraFace(i));
+        p.set(std::string("uTetraDir") + at, tetra::faceDirection(i));
+      }
     }
     for (const auto& [name, unit] : {std::pair{"uParaboloidUp", 2},
                                      {"uParaboloidDown", 3},
@@ -623,6 +699,12 @@ class OmniCube final : public Lesson {
   std::unique_ptr<Framebuffer> tetra_framebuffer_;
   int tetra_size_ = 0, tetra_bits_ = 0;
   std::array<bool, tetra::kFaces> tetra_drawn_{}, tetra_casters_{}, tetra_seen_{};
+  // The texels per pixel (measureTexels), and what they were measured for.
+  Texture texel_color_, texel_depth_;
+  std::unique_ptr<Framebuffer> texel_target_;
+  int texel_target_w_ = 0, texel_target_h_ = 0;
+  TexelStats texel_stats_;
+  std::string texel_key_;
   int cube_size_ = 0, cube_bits_ = 0;
   std::array<bool, 6> drawn_{}, has_casters_{}, seen_{};
   glm::vec3 light_{0.0f};

@@ -7,6 +7,7 @@
 // with p moved along its normal by bias.normal texels first (a texel is 2 z / size wide).
 #include "lighting.glsl"
 #include "cube_lookup.glsl"
+#include "texel_density.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -103,6 +104,22 @@ float shadowTerm(vec3 n) {
 #endif
 }
 
+// The texel coordinates of v on the face (or hemisphere) it reads: the face's -1 .. 1 times
+// half its texels.
+vec2 faceTexels(vec3 v) {
+  vec3 a = abs(v);
+#if OMNI_METHOD == OMNI_METHOD_PARABOLOID
+  vec2 st = vec2(v.x, v.z) / (length(v) + (v.y >= 0.0 ? v.y : -v.y));
+#elif OMNI_METHOD == OMNI_METHOD_TETRAHEDRON
+  int tf = tetraFace(v);
+  vec2 st = 4.0 * (tetraCoord(v, tf) - tetraTile(tf)) - 1.0;  // -1 .. 1 across the tile
+#else
+  int f = majorFace(v);
+  vec2 st = f < 2 ? v.yz / a.x : (f < 4 ? v.xz / a.y : v.xy / a.z);
+#endif
+  return 0.5 * uCubeSize * st;
+}
+
 // Six colours, one a face, for the face view.
 vec3 faceColor(int face) {
   vec3 c[6] = vec3[6](vec3(0.9, 0.3, 0.3), vec3(0.45, 0.12, 0.12), vec3(0.3, 0.85, 0.3),
@@ -132,20 +149,18 @@ void main() {
   int face = majorFace(v);
 #endif
   outColor = vec4(faceColor(face) * (0.35 + 0.65 * shade), 1.0);
+#elif VIEW == VIEW_TEXEL_STATS
+  // The runner's texel pass for a map that is no one 2D map (main.cpp reads it back): the
+  // least and most texels a pixel spans on the face it reads, and whether the pixel counts
+  // (seen from the front, facing the light, within its reach).
+  vec3 v = vWorld - uLightPos;
+  vec2 t = faceTexels(v);
+  vec2 s = singularValues(dFdx(t), dFdy(t));
+  bool counted = gl_FrontFacing && dot(n, -v) > 0.0 && length(v) < uCubeFar && s.y > 0.0;
+  outColor = vec4(s.y, s.x, counted ? 1.0 : 0.0, 0.0);
 #elif VIEW == VIEW_FACE_TEXELS
   // Map texels per pixel on the face read: how far one pixel step moves in the face's texels.
-  vec3 v = vWorld - uLightPos;
-  vec3 a = abs(v);
-#if OMNI_METHOD == OMNI_METHOD_PARABOLOID
-  vec2 st = vec2(v.x, v.z) / (length(v) + (v.y >= 0.0 ? v.y : -v.y));
-#elif OMNI_METHOD == OMNI_METHOD_TETRAHEDRON
-  int tf = tetraFace(v);
-  vec2 st = 4.0 * (tetraCoord(v, tf) - tetraTile(tf)) - 1.0;  // -1 .. 1 across the tile
-#else
-  int f = majorFace(v);
-  vec2 st = f < 2 ? v.yz / a.x : (f < 4 ? v.xz / a.y : v.xy / a.z);
-#endif
-  vec2 texels = 0.5 * uCubeSize * st;
+  vec2 texels = faceTexels(vWorld - uLightPos);
   float per_pixel = max(length(dFdx(texels)), length(dFdy(texels)));
   // Green near one texel a pixel, red where a texel covers many pixels (blocky), blue where
   // many texels fall on one pixel (wasted), on a log scale.

@@ -5,6 +5,7 @@
 // TEXEL_HEATMAP 1: the `aliasing` view (red under-sampled, blue over-sampled, green one texel
 // per pixel along both axes, white near one); 0: the raw numbers the runner reads back.
 #include "lighting.glsl"
+#include "texel_density.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -14,13 +15,6 @@ uniform int uObject;
 uniform float uTolerance;  // kTexelTolerance
 out vec4 outColor;
 
-// Largest first, as singularValues() in texel_density.cpp: s1^2 + s2^2 = |J|^2, s1 s2 = |det J|.
-vec2 singularValues(vec2 ddx, vec2 ddy) {
-  float frob = dot(ddx, ddx) + dot(ddy, ddy);
-  float det = abs(ddx.x * ddy.y - ddy.x * ddx.y);
-  float big = sqrt(0.5 * (frob + sqrt(max(frob * frob - 4.0 * det * det, 0.0))));
-  return vec2(big, big > 0.0 ? det / big : 0.0);
-}
 
 void main() {
   vec4 c = vShadowCoord;
