@@ -96,6 +96,18 @@ inline nlohmann::ordered_json report(Runner& runner) {
   return parsed;
 }
 
+// Renders the lesson once with `sets`, measures it against the truth and returns its report
+// (the error in it); a GL error fails.
+inline nlohmann::ordered_json measuredReport(const std::string& lesson,
+                                             const std::vector<std::string>& sets, int width = 320,
+                                             int height = 240) {
+  auto runner = startLesson(lesson, sets, width, height);
+  runner->renderFrame();
+  runner->measureError();
+  EXPECT_EQ(runner->glErrors(), 0) << label(sets);
+  return report(*runner);
+}
+
 // The one value named `key` anywhere in the report, or a JSON pointer ("/error/vis_mae").
 // A key that is missing or found twice fails the test: the caller must say which it means.
 inline nlohmann::ordered_json reportValue(Runner& runner, const std::string& key) {

@@ -331,11 +331,7 @@ TEST(Lesson11, DualParaboloidsBendLongEdgesAndMoreTexelsDoNotStraightenThem) {
 // the dual paraboloids (measured vis_mae 0.00081, 0.00140, 0.00291).
 TEST(Lesson11, ATetrahedronSpendsTheCubesTexelsOnFourFacesAndLandsBetween) {
   auto run = [](const std::vector<std::string>& sets) {
-    auto runner = startLesson(kLesson, sets, 320, 240);
-    runner->renderFrame();
-    runner->measureError();
-    EXPECT_EQ(runner->glErrors(), 0);
-    return testing::report(*runner);
+    return testing::measuredReport(kLesson, sets);
   };
   const auto cube = run({});
   const auto tetra = run({"omni.method=tetrahedron"});

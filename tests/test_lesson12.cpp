@@ -337,11 +337,7 @@ TEST(Lesson12, ThePracticalSplitGivesEverySliceATexelAPixelAndOneMapDoesNot) {
 // percent short of it leaves pixels out.
 TEST(Lesson12, AVisibleRangeFitsEverySliceToTheDepthsInView) {
   auto run = [](const std::vector<std::string>& sets) {
-    auto runner = startLesson(kLesson, sets, 320, 240);
-    runner->renderFrame();
-    runner->measureError();
-    EXPECT_EQ(runner->glErrors(), 0);
-    return testing::report(*runner);
+    return testing::measuredReport(kLesson, sets);
   };
   const auto inSlices = [](const nlohmann::ordered_json& r) {
     long long sum = 0;

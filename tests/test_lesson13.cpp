@@ -31,11 +31,7 @@ TEST(Lesson13, EveryViewOfEveryMethodIsCleanAndDistinct) {
 
 // The report of one setting at 640x480, after the truth.
 nlohmann::ordered_json measured(const std::vector<std::string>& sets) {
-  auto runner = startLesson(kLesson, sets, 640, 480);
-  runner->renderFrame();
-  runner->measureError();
-  EXPECT_EQ(runner->glErrors(), 0);
-  return testing::report(*runner);
+  return testing::measuredReport(kLesson, sets, 640, 480);
 }
 
 TEST(Lesson13, VarianceMapsMatchPcfForOneLookupInsteadOfTwentyFive) {
