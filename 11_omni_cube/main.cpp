@@ -22,6 +22,7 @@
 #include <string>
 #include <utility>
 
+#include "core/fnv.hpp"
 #include "core/json.hpp"
 #include "cube_math.hpp"
 #include "lesson/lesson.hpp"
@@ -216,18 +217,12 @@ class OmniCube final : public Lesson {
   // What the texels per pixel depend on: the method and its texels, the light, the eye, the
   // frame's size and where the objects are (their matrices, hashed).
   std::string texelKey(const Frame& f) const {
-    std::uint64_t hash = 1469598103934665603ULL;  // FNV-1a
-    const auto mix = [&](const void* data, size_t size) {
-      const auto* bytes = static_cast<const unsigned char*>(data);
-      for (size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ULL;
-    };
-    for (const SceneObject& o : f.scene.objects) mix(&o.model, sizeof o.model);
-    const glm::mat4 eye = f.projection * f.view;
-    mix(&eye, sizeof eye);
-    const glm::vec4 light(light_, far_);
-    mix(&light, sizeof light);
+    Fnv hash;
+    for (const SceneObject& o : f.scene.objects) hash.add(o.model);
+    hash.add(f.projection * f.view);
+    hash.add(glm::vec4(light_, far_));
     return method_.name() + " " + std::to_string(size_()) + " " + std::to_string(f.width) + "x" +
-           std::to_string(f.height) + " " + std::to_string(hash);
+           std::to_string(f.height) + " " + std::to_string(hash.h);
   }
 
   // The eye's pixels drawn with the hidden texel_stats view into a float target and read back:

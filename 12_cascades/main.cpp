@@ -28,6 +28,7 @@
 #include <sstream>
 
 #include "cascade_math.hpp"
+#include "core/fnv.hpp"
 #include "core/json.hpp"
 #include "lesson/lesson.hpp"
 #include "visible_depths.hpp"
@@ -493,12 +494,9 @@ class Cascades final : public Lesson {
       if (p.name != "view") key << ' ' << p.text();
     }
     // Where the objects are (a lesson may move one): their matrices' bytes, hashed (FNV-1a).
-    std::uint64_t hash = 1469598103934665603ULL;
-    for (const SceneObject& o : f.scene.objects) {
-      const auto* bytes = reinterpret_cast<const unsigned char*>(&o.model);
-      for (size_t i = 0; i < sizeof o.model; ++i) hash = (hash ^ bytes[i]) * 1099511628211ULL;
-    }
-    key << ' ' << hash;
+    Fnv hash;
+    for (const SceneObject& o : f.scene.objects) hash.add(o.model);
+    key << ' ' << hash.h;
     return key.str();
   }
 

@@ -15,12 +15,6 @@ namespace shadows {
 
 class VisibleDepths {
  public:
-  VisibleDepths() = default;
-  VisibleDepths(const VisibleDepths&) = delete;
-  VisibleDepths& operator=(const VisibleDepths&) = delete;
-  ~VisibleDepths() {
-    if (vao_ != 0) glDeleteVertexArrays(1, &vao_);
-  }
   void init(const std::filesystem::path& reduceShader) {
     depth_program_ = ProgramVariants(commonShaderDir() / "light_depth.vert",
                                      commonShaderDir() / "depth_only.frag");
@@ -45,15 +39,16 @@ class VisibleDepths {
     const Texture* source = &depth_;
     for (size_t k = 0; k < steps_.size(); ++k) {
       Step& step = steps_[k];
-      step.target->bind();
-      glViewport(0, 0, step.texture.width(), step.texture.height());
+      Frame pass = f;  // the step's target, as lesson 13's blur draws its passes
+      pass.target = step.target->id();
+      pass.width = step.texture.width();
+      pass.height = step.texture.height();
       const Program& r = reduce_program_.get({define("FIRST_STEP", k == 0 ? 1 : 0)});
       source->bind(0);
       Sampler::unbind(0);
       r.set("uSource", 0);
       r.set("uSourceSize", glm::vec2(source->width(), source->height()));
-      r.use();
-      drawTriangle();
+      pass.drawFullscreen(r);  // leaves the step's target bound: the last one is read back
       ++passes_;
       source = &step.texture;
     }
@@ -97,20 +92,12 @@ class VisibleDepths {
       step.target->check();
       steps_.push_back(std::move(step));
     }
-    if (vao_ == 0) glGenVertexArrays(1, &vao_);
-  }
-
-  void drawTriangle() const {
-    glBindVertexArray(vao_);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    countDrawCall();
   }
 
   ProgramVariants depth_program_, reduce_program_;
   Texture depth_;
   std::unique_ptr<Framebuffer> depth_target_;
   std::vector<Step> steps_;
-  GLuint vao_ = 0;
   int passes_ = 0;
 };
 

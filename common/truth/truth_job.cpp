@@ -12,6 +12,8 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "core/fnv.hpp"
+
 namespace shadows {
 
 namespace {
@@ -37,15 +39,6 @@ bool lightVector(const TruthLight& light, const glm::vec3& p, glm::vec3& l) {
 constexpr std::uint32_t kJobMagic = 0x4A544853u;
 constexpr std::uint32_t kTraceMagic = 0x52544853u;
 constexpr std::uint32_t kVersion = 1;
-
-// 64-bit FNV-1a.
-struct Fnv {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  void add(const void* data, std::size_t size) {
-    const auto* b = static_cast<const std::uint8_t*>(data);
-    for (std::size_t i = 0; i < size; ++i) h = (h ^ b[i]) * 0x100000001b3ull;
-  }
-};
 
 // Little-endian 4-byte words (every target the collection builds for is little-endian).
 class Writer {
