@@ -156,12 +156,15 @@ class OmniCube final : public Lesson {
     if (off_()) {
       f.measure.count("shadow_map_renders", 0);
       countFaces(f, 0, 0, 0);
-    } else if (paraboloid()) {
-      renderParaboloids(f);
-    } else if (tetrahedron()) {
-      renderTetrahedron(f);
     } else {
-      renderCube(f);
+      releaseOtherMethods();
+      if (paraboloid()) {
+        renderParaboloids(f);
+      } else if (tetrahedron()) {
+        renderTetrahedron(f);
+      } else {
+        renderCube(f);
+      }
     }
 
     {
@@ -229,6 +232,7 @@ class OmniCube final : public Lesson {
   // the least and most texels a pixel spans on the face it reads (scene.frag).
   void measureTexels(Frame& f) {
     if (texel_target_w_ != f.width || texel_target_h_ != f.height) {
+      const auto uncounted = TextureBytes::Scope::none();  // a measurement's, not the light's
       texel_color_ = Texture::color(f.width, f.height, GL_RGBA32F);
       texel_depth_ = Texture::depth(f.width, f.height, 24);
       texel_target_ = std::make_unique<Framebuffer>();
@@ -355,6 +359,27 @@ class OmniCube final : public Lesson {
   }
 
  private:
+  // A method's maps are held while it is used: the others' are let go (a method chosen again
+  // starts as it would in a fresh run), so what the light holds is its method's alone.
+  void releaseOtherMethods() {
+    if (!cube() && cube_size_ != 0) {
+      for (auto& fb : framebuffers_) fb.reset();
+      layered_framebuffer_.reset();
+      cube_ = Texture();
+      cube_size_ = 0, cube_bits_ = 0;
+    }
+    if (!paraboloid() && paraboloid_size_ != 0) {
+      for (auto& fb : paraboloid_framebuffers_) fb.reset();
+      paraboloids_ = {};
+      paraboloid_size_ = 0, paraboloid_bits_ = 0;
+    }
+    if (!tetrahedron() && tetra_size_ != 0) {
+      tetra_framebuffer_.reset();
+      tetra_map_ = Texture();
+      tetra_size_ = 0, tetra_bits_ = 0;
+    }
+  }
+
   // The cube's storage, and which faces hold their casters for the current light.
   void renderCube(Frame& f) {
     const int bits = std::stoi(bits_.name());

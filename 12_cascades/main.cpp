@@ -503,6 +503,7 @@ class Cascades final : public Lesson {
   // The shimmer target: the frame's size, RGBA8, read back as bytes.
   void ensureStateTarget(const Frame& f) {
     if (shimmer_target_w_ == f.width && shimmer_target_h_ == f.height) return;
+    const auto uncounted = TextureBytes::Scope::none();  // a measurement's, not the sun's
     shimmer_color_ = Texture::color(f.width, f.height, GL_RGBA8);
     shimmer_depth_ = Texture::depthStencil(f.width, f.height);
     shimmer_target_ = std::make_unique<Framebuffer>();
@@ -551,7 +552,10 @@ class Cascades final : public Lesson {
   // share of sunlit points whose state flips between two steps, over all steps.
   void measureShimmer(Frame& f) {
     auto timing = f.measure.pass("shimmer");
-    ensureAtlas(path_atlas_);  // its own: the frame's atlas and what it keeps stay as they are
+    {
+      const auto uncounted = TextureBytes::Scope::none();  // a measurement's, not the sun's
+      ensureAtlas(path_atlas_);  // its own: the frame's atlas and what it keeps stay as they are
+    }
     // The path's slices are its own too: the frame's atlas keeps the slices it was fitted for.
     const auto splits = splits_;
     const int count = used_count_;

@@ -397,17 +397,41 @@ std::string frontPlotData(const std::filesystem::path& dat, const std::string& n
     if (ymax[row] > 0) pad(ymin[row], ymax[row], 0.4, 0.12);
   }
 
+  // Series (Sweep::series): each row's, by the value its settings give the parameter, and a
+  // colour each, in order of first appearance.
+  std::vector<std::string> series_names;
+  std::vector<size_t> series_of(t.rows.size(), 0);
+  if (!sweep.series.empty()) {
+    for (size_t r = 0; r < t.rows.size(); ++r) {
+      std::string value;
+      for (const std::string& set : rowSettings(sweep, t, r)) {
+        if (set.rfind(sweep.series + "=", 0) == 0) value = set.substr(sweep.series.size() + 1);
+      }
+      const auto it = std::find(series_names.begin(), series_names.end(), value);
+      series_of[r] = static_cast<size_t>(it - series_names.begin());
+      if (it == series_names.end()) series_names.push_back(value);
+    }
+  }
+  static constexpr unsigned kSeriesColours[] = {0xe08a00, 0x2a9d3c, 0x8e44ad, 0x16a3b8,
+                                                0xd6336c, 0x7a5c2e, 0x5a6b8c, 0xb5b000};
+  const auto colourOf = [&](size_t r) {
+    return series_names.empty() ? 0xb9b9b9u
+                                : kSeriesColours[series_of[r] % std::size(kSeriesColours)];
+  };
   // The page, in pixels: a title band, the key, then one cell per panel.
   const double cell_w = std::clamp(1760.0 / static_cast<double>(scenes.size()), 640.0, 1200.0);
   // One column of panels (one scene) is wide anyway: taller panels give its labels room.
   const double plot_h = scenes.size() == 1 ? 480.0 : 350.0;
-  const double cell_h = plot_h + 130.0, head = 170.0, left = 96.0, right = 26.0, above = 56.0;
+  // The key grows by a line a series.
+  const double head = 170.0 + 20.0 * static_cast<double>(series_names.size());
+  const double cell_h = plot_h + 130.0, left = 96.0, right = 26.0, above = 56.0;
   const double width = 16.0 + cell_w * static_cast<double>(scenes.size());
   const double height = head + cell_h * static_cast<double>(most_groups * metrics.size()) + 8.0;
 
   std::ostringstream data;
-  data << "# " << name << ": five blocks per panel: the other points, the front in cost order "
-       << "(x y hover), the default, label lines (x y text colour), leader lines\n";
+  data << "# " << name << ": six blocks per panel: the other points (x y hover colour), the "
+       << "front in cost order (x y hover), the default, label lines (x y text colour), leader "
+       << "lines, each series' own front (x y colour)\n";
   std::string p_left, p_right, p_bottom, p_top, p_ymin, p_ymax, p_ysteps, p_titles, p_ylabels;
   size_t unlabelled = 0;
   bool any_default = false;
@@ -499,9 +523,11 @@ std::string frontPlotData(const std::filesystem::path& dat, const std::string& n
       const auto& rows = i == 0 ? others : front;
       for (size_t r : rows) {
         data << number(x[r]) << " " << number(y[p.metric][r]) << " "
-             << datString(hoverOf(r, metric, i == 1)) << "\n";
+             << datString(hoverOf(r, metric, i == 1));
+        if (i == 0) data << " " << colourOf(r);
+        data << "\n";
       }
-      if (rows.empty()) data << "nan nan \"\"\n";
+      if (rows.empty()) data << (i == 0 ? "nan nan \"\" 0\n" : "nan nan \"\"\n");
       data << "\n\n";
     }
     bool drew_default = false;
@@ -542,6 +568,30 @@ std::string frontPlotData(const std::filesystem::path& dat, const std::string& n
     }
     if (!any_leader) data << "nan nan\n";
     data << "\n\n";
+    // Each series' own front, in cost order: the least error that series reaches for a time.
+    bool any_series_front = false;
+    for (size_t k = 0; k < series_names.size(); ++k) {
+      std::vector<size_t> rows;
+      for (size_t r : p.rows) {
+        if (series_of[r] == k) rows.push_back(r);
+      }
+      std::sort(rows.begin(), rows.end(), [&](size_t a, size_t b) {
+        return std::make_pair(x[a], y[p.metric][a]) < std::make_pair(x[b], y[p.metric][b]);
+      });
+      // Drawn as steps, written out: gnuplot's steps take no colour per point.
+      double best = 1e300;
+      bool any = false;
+      for (size_t r : rows) {
+        if (y[p.metric][r] >= best) continue;
+        if (any) data << number(x[r]) << " " << number(best) << " " << colourOf(r) << "\n";
+        best = y[p.metric][r];
+        data << number(x[r]) << " " << number(best) << " " << colourOf(r) << "\n";
+        any = any_series_front = true;
+      }
+      if (any) data << "\n";
+    }
+    if (!any_series_front) data << "nan nan 0\n";
+    data << "\n\n";
 
     char frac[64];
     auto add = [&](std::string& list, double v) {
@@ -564,7 +614,17 @@ std::string frontPlotData(const std::filesystem::path& dat, const std::string& n
   const std::string key_front =
       "Pareto front: no other setting is both faster and more accurate; its steps give the "
       "least error for a time budget";
-  const std::string key_other = "every other setting (faint; the SVG names each on hover)";
+  const std::string key_other = series_names.empty()
+                                    ? "every other setting (faint; the SVG names each on hover)"
+                                    : "every other setting, in its " + sweep.series +
+                                          "'s colour (the SVG names each on hover)";
+  std::string series_list, series_colours;
+  for (size_t k = 0; k < series_names.size(); ++k) {
+    char colour[16];
+    std::snprintf(colour, sizeof colour, "#%06x", kSeriesColours[k % std::size(kSeriesColours)]);
+    series_list += (series_list.empty() ? "" : " ") + series_names[k];
+    series_colours += (series_colours.empty() ? "" : " ") + std::string(colour);
+  }
   std::string key_default;
   if (sweep.study) {
     key_default =
@@ -596,7 +656,9 @@ std::string frontPlotData(const std::filesystem::path& dat, const std::string& n
          "; xsteps=" + gnuplotString(ticSteps(xmin, xmax, cell_w - left - right)) +
          "; p_titles=" + gnuplotString(p_titles) + "; p_ylabels=" + gnuplotString(p_ylabels) +
          "; key_front=" + gnuplotString(key_front) + "; key_other=" + gnuplotString(key_other) +
-         "; key_default=" + gnuplotString(key_default) + "; note=" + gnuplotString(note);
+         "; key_default=" + gnuplotString(key_default) + "; note=" + gnuplotString(note) +
+         "; series=" + gnuplotString(series_list) +
+         "; series_colours=" + gnuplotString(series_colours);
 }
 
 // ---- Error along a knob (plot_along sweeps: a bias costs no time) ---------------------------

@@ -2,14 +2,17 @@
 # panels, the ranges and where every label goes; this only draws. Called with -e setting:
 #   term     png, or svg (hovering a point shows its settings, time and error)
 #   out, width, height (pixels), title (may hold line breaks)
-#   data     five blocks per panel p, at index 5(p-1) + 0 the other points and + 1 the front in
-#            cost order (columns: time, error, hover text with \n for line breaks), + 2 the
-#            lesson's default, + 3 label lines (time, error, text, colour 0xRRGGBB; left end
-#            and middle of the line), + 4 leader lines (two-point segments)
+#   data     six blocks per panel p, at index 6(p-1) + 0 the other points (time, error, hover
+#            text with \n for line breaks, colour 0xRRGGBB) and + 1 the front in cost order
+#            (time, error, hover text), + 2 the lesson's default, + 3 label lines (time, error,
+#            text, colour; left end and middle of the line), + 4 leader lines (two-point
+#            segments), + 5 each series' own front as steps (time, error, colour; a blank line
+#            between)
 #   npanels; per panel, words: p_left p_right p_bottom p_top (screen fractions of the plot
 #            area), p_ymin p_ymax, p_ysteps p_titles p_ylabels (quoted)
 #   xmin, xmax, xsteps, xlabel: the time axis, shared by every panel
 #   key_x, key_y (screen), key_front, key_other, key_default, note
+#   series, series_colours: the series' names and colours (#rrggbb), words; "" for none
 set datafile missing "nan"
 # The two characters \n to line breaks (a data file's strings take no escapes).
 lines(s) = (i = strstrt(s, "\\n"), i == 0 ? s : s[1:i - 1] . "\n" . lines(s[i + 2:]))
@@ -67,10 +70,11 @@ do for [p = 1:npanels] {
   } else {
     unset key
   }
-  b = 5 * (p - 1)
+  b = 6 * (p - 1)
   if (term eq "svg") {
-    plot data index b using 1:2:(lines(stringcolumn(3))) \
-           with labels hypertext point pt 7 ps 0.7 lc rgb other_color notitle, \
+    plot data index b using 1:2:(lines(stringcolumn(3))):4 \
+           with labels hypertext point pt 7 ps 0.7 lc rgb variable notitle, \
+         data index b + 5 using 1:2:3 with lines lw 1.5 lc rgb variable notitle, \
          data index b + 1 using 1:2 with steps lw 2.5 lc rgb front_color notitle, \
          data index b + 1 using 1:2:(lines(stringcolumn(3))) \
            with labels hypertext point pt 7 ps 1.2 lc rgb front_color notitle, \
@@ -79,9 +83,12 @@ do for [p = 1:npanels] {
          data index b + 3 using 1:2:3:4 with labels left font f9 tc rgb variable notitle, \
          keyentry with linespoints lw 2.5 pt 7 ps 1.2 lc rgb front_color title key_front, \
          keyentry with points pt 7 ps 0.7 lc rgb other_color title key_other, \
-         keyentry with points pt 6 ps 2.6 lw 2 lc rgb default_color title key_default
+         keyentry with points pt 6 ps 2.6 lw 2 lc rgb default_color title key_default, \
+         for [k = 1:words(series)] keyentry with linespoints lw 1.5 pt 7 ps 0.7 \
+           lc rgb word(series_colours . " #000000", k) title word(series, k)
   } else {
-    plot data index b using 1:2 with points pt 7 ps 0.7 lc rgb other_color notitle, \
+    plot data index b using 1:2:4 with points pt 7 ps 0.7 lc rgb variable notitle, \
+         data index b + 5 using 1:2:3 with lines lw 1.5 lc rgb variable notitle, \
          data index b + 1 using 1:2 with steps lw 2.5 lc rgb front_color notitle, \
          data index b + 1 using 1:2 with points pt 7 ps 1.2 lc rgb front_color notitle, \
          data index b + 2 using 1:2 with points pt 6 ps 2.6 lw 2 lc rgb default_color notitle, \
@@ -89,7 +96,9 @@ do for [p = 1:npanels] {
          data index b + 3 using 1:2:3:4 with labels left font f9 tc rgb variable notitle, \
          keyentry with linespoints lw 2.5 pt 7 ps 1.2 lc rgb front_color title key_front, \
          keyentry with points pt 7 ps 0.7 lc rgb other_color title key_other, \
-         keyentry with points pt 6 ps 2.6 lw 2 lc rgb default_color title key_default
+         keyentry with points pt 6 ps 2.6 lw 2 lc rgb default_color title key_default, \
+         for [k = 1:words(series)] keyentry with linespoints lw 1.5 pt 7 ps 0.7 \
+           lc rgb word(series_colours . " #000000", k) title word(series, k)
   }
 }
 unset multiplot

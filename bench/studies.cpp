@@ -1,5 +1,7 @@
 // The studies across lessons: sweeps whose bundles pick the lesson that renders them
 // (`lesson=NAME`). A lesson's own sweep is in its directory (NN_name/sweep.cpp).
+#include <algorithm>
+
 #include "bench.hpp"
 
 namespace shadows::bench {
@@ -11,7 +13,11 @@ namespace {
 // itself; instrumentation (a `*.count` switch) is off, since it is not the shadow.
 Sweep shadowCostSweep() {
   Axis lessons{"lesson_tag", {}};
+  const std::vector<std::string> hosts = registeredHosts();
   for (const std::string& name : registeredLessons()) {
+    // A lesson that hosts others (16) costs what its techniques cost, each measured here as
+    // its own lesson.
+    if (std::find(hosts.begin(), hosts.end(), name) != hosts.end()) continue;
     Runner probe(name, makeLesson(name), RunOptions{});  // parameters only, no GL
     // A map to cache is what the study's shadow.cache axis varies: lesson 09's volumes have
     // none (their cost against 03 and 05 is volumes_vs_maps below).

@@ -151,7 +151,9 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* shadows_get(const char* name) {
 }
 
 int main(int argc, char** argv) {
-  const std::string name = shadows::registeredLessons().at(0);
+  // A page holds one lesson, or one that hosts others (lesson 16) with theirs.
+  const std::string name = shadows::registeredHosts().empty() ? shadows::registeredLessons().at(0)
+                                                              : shadows::registeredHosts().at(0);
   const auto make = [&](shadows::RunOptions options) {
     options.force_window = true;
     return std::make_unique<Runner>(name, shadows::makeLesson(name), options);

@@ -52,6 +52,9 @@ struct Param {
   // Optional: "" while the parameter acts, else why it does nothing in the current settings
   // (light.near while shadow.fit is on). The panel greys the widget out and says why.
   std::function<std::string(const Params&)> inactive;
+  // Optional: true while the panel should not draw the widget at all (lesson 16: the knobs of
+  // the techniques not in use), where greyed widgets would only crowd it.
+  std::function<bool(const Params&)> hidden;
   // Where the panel drew its widget last frame (ImGui screen coordinates, y down), so a test
   // or a tutorial script can aim the mouse at it.
   glm::vec2 widget_min{0.0f}, widget_max{0.0f};

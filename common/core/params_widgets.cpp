@@ -15,6 +15,7 @@ bool Params::drawWidgets(const std::function<bool(const Param&)>& which) {
   for (auto& p : params_) {
     if (!which(p)) continue;
     bool changed_now = false;
+    if (p.hidden && p.hidden(*this)) continue;
     std::string idle = locked_ ? locked_(p) : std::string();
     if (idle.empty() && p.inactive) idle = p.inactive(*this);
     if (!idle.empty()) ImGui::BeginDisabled();

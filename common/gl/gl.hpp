@@ -60,6 +60,57 @@ void deleteProgram(GLuint id);
 void deleteQuery(GLuint id);
 void deleteSampler(GLuint id);
 
+// Bytes of texture storage one part of the program holds (lesson 16 asks it of each technique
+// it runs: "bytes of maps"). A texture created while a Scope lives is counted against its tally
+// until it is destroyed; the others (the runner's targets) against none.
+class TextureBytes {
+ public:
+  long long bytes() const { return bytes_; }
+  class Scope {
+   public:
+    explicit Scope(TextureBytes& tally) : was_(std::exchange(current_, &tally)) {}
+    // Textures that are no part of what is counted: a lesson's measuring targets.
+    static Scope none() { return Scope(nullptr); }
+    ~Scope() { current_ = was_; }
+    Scope(const Scope&) = delete;
+    Scope& operator=(const Scope&) = delete;
+
+   private:
+    explicit Scope(TextureBytes* tally) : was_(std::exchange(current_, tally)) {}
+    TextureBytes* was_;
+  };
+  // One texture's share: on the tally from its creation to its destruction, moved with it.
+  class Share {
+   public:
+    Share() = default;
+    explicit Share(long long bytes) : tally_(current_), bytes_(bytes) {
+      if (tally_ != nullptr) tally_->bytes_ += bytes_;
+    }
+    Share(Share&& o) noexcept : tally_(std::exchange(o.tally_, nullptr)), bytes_(o.bytes_) {}
+    Share& operator=(Share&& o) noexcept {
+      if (this != &o) {
+        release();
+        tally_ = std::exchange(o.tally_, nullptr);
+        bytes_ = o.bytes_;
+      }
+      return *this;
+    }
+    ~Share() { release(); }
+
+   private:
+    void release() {
+      if (tally_ != nullptr) tally_->bytes_ -= bytes_;
+      tally_ = nullptr;
+    }
+    TextureBytes* tally_ = nullptr;
+    long long bytes_ = 0;
+  };
+
+ private:
+  long long bytes_ = 0;
+  static inline TextureBytes* current_ = nullptr;
+};
+
 class Texture {
  public:
   // A depth texture for a shadow map: bits = 16, 24 or 32 (32 = float).
@@ -113,6 +164,7 @@ class Texture {
   std::array<GLenum, 4> swizzle_{GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA};
   std::optional<glm::vec4> border_;
   int width_ = 0, height_ = 0, levels_ = 1;
+  TextureBytes::Share bytes_;  // its storage, on the tally of whoever created it
 };
 
 // Linear lookups in cube maps blend across face edges (GL_TEXTURE_CUBE_MAP_SEAMLESS) or not;

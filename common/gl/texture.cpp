@@ -26,6 +26,39 @@ Sampler Sampler::depth(bool compare, GLenum filter) {
 }
 
 namespace {
+// The bytes a texture of this format holds, every level down from width x height: the
+// format's own size (a 24-bit depth is stored in 4 bytes, as the GL's implementations do).
+long long storageBytes(GLenum internalFormat, int width, int height, int levels = 1) {
+  long long per_texel = 4;
+  switch (internalFormat) {
+    case GL_R8:
+      per_texel = 1;
+      break;
+    case GL_RG8:
+    case GL_DEPTH_COMPONENT16:
+    case GL_R16F:
+      per_texel = 2;
+      break;
+    case GL_RG16F:
+      per_texel = 4;
+      break;
+    case GL_RG32F:
+    case GL_RGBA16F:
+      per_texel = 8;
+      break;
+    case GL_RGBA32F:
+      per_texel = 16;
+      break;
+    default:  // RGBA8, R32F, depth 24 and 32F, depth 24 + stencil 8
+      break;
+  }
+  long long bytes = 0;
+  for (int level = 0; level < levels; ++level) {
+    bytes += per_texel * std::max(1, width >> level) * std::max(1, height >> level);
+  }
+  return bytes;
+}
+
 // A depth map's storage for 16, 24 or 32 (float) bits: its internal format and the pixel type
 // glTexImage2D takes with it.
 struct DepthFormat {
@@ -45,6 +78,7 @@ Texture Texture::depth(int width, int height, int bits) {
   const DepthFormat format = depthFormat(bits);
   glTexImage2D(GL_TEXTURE_2D, 0, format.internal, width, height, 0, GL_DEPTH_COMPONENT, format.type,
                nullptr);
+  t.bytes_ = TextureBytes::Share(storageBytes(static_cast<GLenum>(format.internal), width, height));
   // Outside the map counts as "nothing in front": depth 1 at the border.
   t.setWrap(GL_CLAMP_TO_BORDER, GL_CLAMP_TO_BORDER);
   t.setBorder(glm::vec4(1.0f));
@@ -66,6 +100,8 @@ Texture Texture::depthCube(int size, int bits) {
     glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, format.internal, size, size, 0,
                  GL_DEPTH_COMPONENT, format.type, nullptr);
   }
+  t.bytes_ =
+      TextureBytes::Share(6 * storageBytes(static_cast<GLenum>(format.internal), size, size));
   // Every direction lands on some face: no border, and the edge texels are the face's own.
   t.setWrap(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
@@ -117,6 +153,7 @@ void allocate2D(GLenum internalFormat, int width, int height, int levels = 1) {
 Texture Texture::depthStencil(int width, int height) {
   Texture t = create(GL_TEXTURE_2D, width, height);
   allocate2D(GL_DEPTH24_STENCIL8, width, height);
+  t.bytes_ = TextureBytes::Share(storageBytes(GL_DEPTH24_STENCIL8, width, height));
   return t;
 }
 
@@ -138,6 +175,7 @@ Texture Texture::color(int width, int height, GLenum internalFormat, bool mipmap
   while (mipmapped && std::max(width, height) >> levels > 0) ++levels;
   t.levels_ = levels;
   allocate2D(internalFormat, width, height, levels);
+  t.bytes_ = TextureBytes::Share(storageBytes(internalFormat, width, height, levels));
   t.setWrap(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
   t.setFilter(GL_LINEAR);
   return t;
@@ -150,6 +188,7 @@ Texture Texture::table1D(int width, GLenum internalFormat, GLenum format, const 
     glTexImage1D(GL_TEXTURE_1D, 0, static_cast<GLint>(internalFormat), width, 0, format,
                  GL_UNSIGNED_BYTE, nullptr);
     glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAX_LEVEL, 0);
+    t.bytes_ = TextureBytes::Share(storageBytes(internalFormat, width, 1));
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexSubImage1D(GL_TEXTURE_1D, 0, 0, width, format, GL_UNSIGNED_BYTE, pixels);
     glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

@@ -243,13 +243,20 @@ class Lesson {
 
 using LessonFactory = std::function<std::unique_ptr<Lesson>()>;
 struct LessonRegistrar {
-  LessonRegistrar(const std::string& name, LessonFactory factory);
+  LessonRegistrar(const std::string& name, LessonFactory factory, bool host = false);
 };
 std::unique_ptr<Lesson> makeLesson(const std::string& name);
 std::vector<std::string> registeredLessons();
+// The lessons that run others inside them (lesson/hosted_lesson.hpp): the one a binary that
+// links them all with it runs.
+std::vector<std::string> registeredHosts();
 
 #define SHADOWS_LESSON(Class)                                \
   static const ::shadows::LessonRegistrar kRegistrar##Class( \
       LESSON_NAME, [] { return std::make_unique<Class>(); })
+// A lesson that hosts others (lesson 16): its binary links theirs too, and runs this one.
+#define SHADOWS_HOST_LESSON(Class)                           \
+  static const ::shadows::LessonRegistrar kRegistrar##Class( \
+      LESSON_NAME, [] { return std::make_unique<Class>(); }, /*host=*/true)
 
 }  // namespace shadows

@@ -55,6 +55,10 @@ struct Sweep {
   std::vector<std::string> report_numbers{};
   // A study across lessons: its name is no lesson, and its bundles say `lesson=NAME`.
   bool study = false;
+  // A parameter whose value makes each point one of several series (lesson 16's technique):
+  // the plot colours each series' points and draws its own front through them, under the
+  // overall one.
+  std::string series{};
 };
 
 // Lessons 06 and 07 (DepthReadback's knobs): seed 000's copy claims, timed as the `readback`

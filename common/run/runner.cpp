@@ -27,10 +27,19 @@ std::map<std::string, LessonFactory>& registry() {
   static std::map<std::string, LessonFactory> lessons;
   return lessons;
 }
+std::vector<std::string>& hosts() {
+  static std::vector<std::string> names;
+  return names;
+}
 }  // namespace
 
-LessonRegistrar::LessonRegistrar(const std::string& name, LessonFactory factory) {
+LessonRegistrar::LessonRegistrar(const std::string& name, LessonFactory factory, bool host) {
   registry()[name] = std::move(factory);
+  if (host) hosts().push_back(name);
+}
+
+std::vector<std::string> registeredHosts() {
+  return hosts();
 }
 
 std::unique_ptr<Lesson> makeLesson(const std::string& name) {
