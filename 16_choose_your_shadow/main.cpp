@@ -1,0 +1,331 @@
+// Lesson 16: choose your shadow. One scene, every technique the course taught, each scored
+// against the same ray-traced truth: for this scene and this budget, which one?
+//
+// Each technique is its own lesson's code, run inside this one (common/lesson/hosted_lesson.hpp):
+//   hard       lesson 04: one map, one compare, a bias
+//   pcf        lesson 05: compare, then average a kernel of taps
+//   filtered   lesson 13: a map that can be blurred (VSM, ESM, moments)
+//   pcss       lesson 14: a blocker search sets the penumbra's width
+//   cascades   lesson 12: a sun's view split by distance, one map a slice
+//   cube       lesson 11: six faces (or two paraboloids, or four) around a point light
+//   volumes    lesson 09: the stencil counts entries into shadow; no map at all
+// Every technique here is scored on every pixel of the frame (a lesson counts only the pixels
+// its own light covers) against one light: a point, or a disk of light.radius. What a technique
+// cannot do with this light it says, and draws the frame without a shadow.
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/json.hpp"
+#include "lesson/hosted_lesson.hpp"
+#include "lesson/lesson.hpp"
+#include "tried.hpp"
+
+namespace shadows {
+
+namespace {
+
+// Each technique: its lesson, its settings here, the knobs this lesson offers of it.
+std::vector<HostedLesson::Spec> techniques() {
+  // Counting taps costs atomics in the eye pass (05, 14): off, so costs compare.
+  return {
+      {"hard", "04_bias_offset", {"inset=false"}, {"shadow.size", "bias.mode"}, {}},
+      {"pcf",
+       "05_pcf_dithered",
+       {"inset=false", "pcf.count=false"},
+       {"shadow.size", "pcf.mode", "pcf.taps", "pcf.radius"},
+       {}},
+      {"filtered",
+       "13_filterable_maps",
+       {"inset=false"},
+       {"shadow.size", "filter.method", "filter.radius"},
+       {}},
+      {"pcss",
+       "14_soft_shadows",
+       {"inset=false", "pcss.count=false"},
+       {"shadow.size", "pcss.search_taps", "pcf.taps"},
+       {{"light.radius", "pcss.light_radius"}}},
+      {"cascades", "12_cascades", {}, {"cascades.count", "cascades.size", "cascades.blend"}, {}},
+      {"cube", "11_omni_cube", {}, {"omni.method", "cube.size"}, {}},
+      {"volumes", "09_shadow_volumes", {}, {}, {}}};  // exact: nothing to trade
+}
+
+}  // namespace
+
+class ChooseYourShadow final : public Lesson {
+ public:
+  std::string title() const override { return "Choose your shadow: one scene, every technique"; }
+  std::string seeds() const override {
+    return "every seed: the techniques of lessons 04, 05, 09, 11, 12, 13 and 14 on one scene";
+  }
+  std::vector<std::string> scenes() const override {
+    return {"contact", "street", "bulb", "torus_pyramid"};
+  }
+  // The preset's light range for every technique: the maps of 04, 05 and 13 fit theirs to the
+  // casters, 12 and 11 set their own, PCSS keeps the preset's, as in lesson 14.
+  std::vector<std::string> unusedSharedParams() const override {
+    return {"light.near", "light.far"};
+  }
+
+  void declare(Params& p) override {
+    host_ = &p;
+    std::vector<std::string> keys;
+    for (HostedLesson::Spec& spec : techniques()) {
+      keys.push_back(spec.key);
+      hosted_.push_back(std::make_unique<HostedLesson>(std::move(spec)));
+    }
+    technique_ = p.addChoice("technique", keys, "pcf", "which lesson's technique draws the shadow",
+                             kDirtyShadowMap);
+    light_radius_ = p.addFloat("light.radius", 0.0f, 0.0f, 1.0f,
+                               "the light's radius: 0 a point (hard shadows), else a disk; the "
+                               "truth and PCSS take it");
+    p.addFloat("dimming", 0.4f, 0.0f, 1.0f, "diffuse left in shadow: dimming + (1-dimming)*shade");
+    p.addBool("shadow.off", false, "no shadow at all: the frame the cost is measured against",
+              kDirtyShadowMap);
+    p.addBool("shadow.cache", true,
+              "re-render a map only when the light or a caster changed (off: every frame, the "
+              "cost of a scene where something always moves)",
+              kDirtyShadowMap);
+    for (auto& h : hosted_) {
+      const std::string key = h->spec().key;
+      h->declare(p, [key](const Params& ps) {
+        return ps.at("technique").is(key) ? std::string() : "technique=" + key + " only";
+      });
+    }
+  }
+
+  void init() override {
+    for (auto& h : hosted_) h->init(*host_);
+  }
+
+  void render(Frame& f) override {
+    // What the host was told (a light moved, a map to re-create) every technique must hear,
+    // the ones not drawn now when they next are.
+    const std::uint32_t dirty = f.params.dirty() & (kDirtyShadowMap | kDirtyResources);
+    f.params.consume(dirty);
+    for (auto& h : hosted_) h->markDirty(dirty);
+    HostedLesson& h = active();
+    h.sync(f.params);
+    cannot_ = cannot(h.spec().key, f.light.directional);
+    if (!cannot_.empty()) {
+      Param& off = h.params().at("shadow.off");
+      if (!off.b()) {
+        off.value[0] = 1.0;
+        h.markDirty(off.affects);
+      }
+    }
+    h.render(f);
+    // One light for every technique, and every pixel counted: a map that covers less of the
+    // scene than its light reaches is wrong there, as the truth sees it.
+    f.truth_area_radius = light_radius_();
+    f.light_view_projection.reset();
+    f.light_reach.reset();
+  }
+
+  void panel(Frame& f) override {
+    const HostedLesson& h = active();
+    ImGui::TextWrapped("%s: lesson %s, \"%s\"", h.spec().key.c_str(), h.spec().lesson.c_str(),
+                       h.lesson().title().c_str());
+    if (!cannot_.empty()) ImGui::TextWrapped("cannot here: %s", cannot_.c_str());
+    ImGui::Text("holds: %.2f MiB of maps", static_cast<double>(h.textureBytes()) / (1 << 20));
+    const ErrorState& error = f.runner.lastError();
+    if (error.valid) {
+      ImGui::Text("error: vis_mae %.5f against a %s", error.metrics.vis_mae,
+                  light_radius_() > 0.0f ? "disk light" : "point light");
+    }
+    recordTried(f);
+    drawTried(f);
+  }
+
+  // instructor/SOLUTIONS.md has the intended solutions (kept off the students' site).
+  std::vector<Exercise> exercises() const override {
+    using B = Figure::Bound;
+    const std::vector<std::string> every = {"technique",
+                                            "hard/shadow.size",
+                                            "hard/bias.mode",
+                                            "pcf/shadow.size",
+                                            "pcf/pcf.mode",
+                                            "pcf/pcf.taps",
+                                            "pcf/pcf.radius",
+                                            "filtered/shadow.size",
+                                            "filtered/filter.method",
+                                            "filtered/filter.radius",
+                                            "pcss/shadow.size",
+                                            "pcss/pcss.search_taps",
+                                            "pcss/pcf.taps",
+                                            "cascades/cascades.count",
+                                            "cascades/cascades.size",
+                                            "cascades/cascades.blend",
+                                            "cube/omni.method",
+                                            "cube/cube.size"};
+    return {{.title = "A bulb in a room",
+             .goal = "A bare bulb lights every direction; lesson 05's map covers a cone of "
+                     "them (vis_mae 0.073). Get vis_mae to 0.002 or less, holding at most 2 MiB "
+                     "of maps.",
+             .setup = {"scene=bulb", "technique=pcf"},
+             .allowed = every,
+             .figures = {{"/error/vis_mae", "vis_mae", B::AtMost, 0.002},
+                         {"/technique_texture_bytes", "bytes of maps", B::AtMost, 2 << 20}},
+             .hint = "Which lessons' lights reach every direction from a point?"},
+            {.title = "A soft table",
+             .goal = "A light 0.2 wide over the table: lesson 04's hard map, 1024 texels a "
+                     "side, draws every edge sharp (vis_mae 0.0025). Get vis_mae to 0.0008 or "
+                     "less, holding at most 16 MiB of maps.",
+             .setup = {"scene=contact", "light.radius=0.1", "technique=hard"},
+             .allowed = every,
+             .figures = {{"/error/vis_mae", "vis_mae", B::AtMost, 0.0008},
+                         {"/technique_texture_bytes", "bytes of maps", B::AtMost, 16 << 20}},
+             .hint = "Near the floor the truth's shadow is sharp, a metre up it is soft: "
+                     "which technique's blur follows the gap?"},
+            {.title = "The street in 16 MiB",
+             .goal = "A 4096-texel map holds the street's shadows well (vis_mae 0.00063) in "
+                     "64 MiB. Keep vis_mae at 0.0009 or less in a quarter of the bytes.",
+             .setup = {"scene=street", "technique=hard", "hard/shadow.size=4096"},
+             .allowed = every,
+             .figures = {{"/error/vis_mae", "vis_mae", B::AtMost, 0.0009},
+                         {"/technique_texture_bytes", "bytes of maps", B::AtMost, 16 << 20}},
+             .hint = "More than one technique gets there: try three, and read each one's "
+                     "frame time beside its bytes."}};
+  }
+
+  // Under a light with a size, the error where the truth is partly lit, not at all, wholly
+  // (lesson 14's regions); a point light has no penumbra to break the error down by.
+  std::vector<ErrorRegion> errorRegions() const override {
+    if (light_radius_() <= 0.0f) return {};
+    return {ErrorRegion::penumbra(), ErrorRegion::umbra(), ErrorRegion::lit()};
+  }
+
+  std::string refusal(const Params& p, const Scene&) const override {
+    const std::string why =
+        cannot(p.at("technique").choice(), p.at("light.type").is("directional"));
+    return why.empty() ? why : "technique=" + p.at("technique").choice() + ": " + why;
+  }
+
+  void report(JsonWriter& json) const override {
+    const HostedLesson& h = active();
+    json.value("technique", h.spec().key);
+    json.value("technique_lesson", h.spec().lesson);
+    json.value("technique_cannot", cannot_);
+    json.value("truth_area_radius", light_radius_());
+    // What the technique keeps on the GPU for its shadow: maps, their copies and blurs.
+    json.value("technique_texture_bytes", h.textureBytes());
+    json.beginObject("technique_report");
+    h.lesson().report(json);
+    json.endObject();
+  }
+
+  void reportPixels(JsonWriter& json, const PixelMeasures& pixels) const override {
+    active().lesson().reportPixels(json, pixels);
+  }
+
+ private:
+  // "" or why a technique cannot draw this light's shadow.
+  static std::string cannot(const std::string& key, bool directional) {
+    if (key == "cascades" && !directional) {
+      return "cascades split a sun's view by distance (lesson 12); this light is a lamp";
+    }
+    if (key == "cube" && directional) {
+      return "a cube map surrounds a light at a point (lesson 11); the sun is at infinity";
+    }
+    return {};
+  }
+  // Where the current settings' points go: the preset and the light.
+  std::string where(const Frame& f) const {
+    char radius[32];
+    std::snprintf(radius, sizeof radius, "%g", static_cast<double>(light_radius_()));
+    return f.params.at("scene").choice() + ", light.radius=" + radius;
+  }
+  // The current settings, as the student would --set them: the technique and its knobs.
+  std::string label(const Frame& f) const {
+    const HostedLesson& h = active();
+    std::string text = "technique=" + h.spec().key;
+    for (const std::string& name : h.spec().knobs) {
+      text += " " + name + "=" + f.params.at(h.knob(name)).text();
+    }
+    return text;
+  }
+  // A new measurement of the truth (its pixels are new) is the current settings' point.
+  void recordTried(const Frame& f) {
+    const ErrorState& error = f.runner.lastError();
+    if (!error.valid || error.pixels == last_pixels_ || !cannot_.empty()) return;
+    last_pixels_ = error.pixels;
+    tried_.record({where(f), label(f), static_cast<size_t>(technique_.param().i()),
+                   f.measure.medianFrameMs(), error.metrics.vis_mae});
+  }
+  // The points measured here, log time across, log error up, each in its technique's colour;
+  // the front through them, the current settings ringed.
+  void drawTried(const Frame& f) {
+    const std::vector<const Tried::Point*> here = tried_.at(where(f));
+    if (here.empty()) {
+      ImGui::TextWrapped("Your front: each setting you let rest is measured and drawn here.");
+      return;
+    }
+    ImGui::TextWrapped(
+        "Your front here (%zu setting%s measured): frame ms across, vis_mae "
+        "up, both log",
+        here.size(), here.size() == 1 ? "" : "s");
+    double x0 = 1e300, x1 = 0, y0 = 1e300, y1 = 0;
+    for (const Tried::Point* p : here) {
+      x0 = std::min(x0, p->ms), x1 = std::max(x1, p->ms);
+      y0 = std::min(y0, p->error), y1 = std::max(y1, p->error);
+    }
+    const auto logOf = [](double v) { return std::log10(std::max(v, 1e-9)); };
+    const double lx0 = logOf(x0) - 0.1, lx1 = logOf(x1) + 0.1;
+    const double ly0 = logOf(y0) - 0.2, ly1 = logOf(y1) + 0.2;
+    const float width = ImGui::GetContentRegionAvail().x, height = 0.6f * width;
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRect(at, ImVec2(at.x + width, at.y + height), IM_COL32(120, 120, 120, 255));
+    const auto point = [&](const Tried::Point& p) {
+      return ImVec2(at.x + width * static_cast<float>((logOf(p.ms) - lx0) / (lx1 - lx0)),
+                    at.y + height * static_cast<float>((ly1 - logOf(p.error)) / (ly1 - ly0)));
+    };
+    const std::vector<const Tried::Point*> on = Tried::front(here);
+    for (size_t i = 1; i < on.size(); ++i) {  // steps: the least error for a time budget
+      const ImVec2 a = point(*on[i - 1]), b = point(*on[i]);
+      draw->AddLine(a, ImVec2(b.x, a.y), IM_COL32(31, 95, 168, 255), 2.0f);
+      draw->AddLine(ImVec2(b.x, a.y), b, IM_COL32(31, 95, 168, 255), 2.0f);
+    }
+    const std::string now = label(f);
+    for (const Tried::Point* p : here) {
+      const ImU32 colour = kColours[p->series % std::size(kColours)];
+      draw->AddCircleFilled(point(*p), 4.0f, colour);
+      if (p->label == now) draw->AddCircle(point(*p), 8.0f, IM_COL32(208, 54, 44, 255), 0, 2.0f);
+    }
+    ImGui::Dummy(ImVec2(width, height + 2.0f));
+    for (size_t k = 0; k < hosted_.size(); ++k) {
+      if (k % 4 != 0) ImGui::SameLine();
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(kColours[k % std::size(kColours)]), "%s",
+                         hosted_[k]->spec().key.c_str());
+    }
+    if (ImGui::Button("Forget these points")) tried_.clear();
+  }
+  // One colour a technique, in the choice's order (bench_sweep's plot uses its own).
+  static constexpr ImU32 kColours[] = {IM_COL32(224, 138, 0, 255),  IM_COL32(42, 157, 60, 255),
+                                       IM_COL32(142, 68, 173, 255), IM_COL32(22, 163, 184, 255),
+                                       IM_COL32(214, 51, 108, 255), IM_COL32(122, 92, 46, 255),
+                                       IM_COL32(90, 107, 140, 255)};
+
+  HostedLesson& active() { return *hosted_.at(static_cast<size_t>(technique_.param().i())); }
+  const HostedLesson& active() const {
+    return *hosted_.at(static_cast<size_t>(technique_.param().i()));
+  }
+
+  Params* host_ = nullptr;
+  std::vector<std::unique_ptr<HostedLesson>> hosted_;
+  ChoiceParam<> technique_;
+  FloatParam light_radius_;
+  std::string cannot_;
+  Tried tried_;  // what the student measured, for the panel's front
+  std::shared_ptr<const ErrorPixels> last_pixels_;
+};
+
+SHADOWS_HOST_LESSON(ChooseYourShadow);
+
+}  // namespace shadows

@@ -1,0 +1,187 @@
+// Lesson 16 end to end, headless: every technique is its own lesson's code run inside this one
+// (common/lesson/hosted_lesson.hpp), so each draws exactly the picture its lesson draws with the
+// same settings; the knobs reach it; what it holds on the GPU is counted; a technique that
+// cannot serve the light says so and draws no shadow; a change made while another technique
+// was drawn is seen when it comes back; and every technique is scored on the same pixels
+// against the same light.
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "harness.hpp"
+
+namespace shadows {
+namespace {
+
+using testing::startLesson;
+
+const std::string kLesson = "16_choose_your_shadow";
+
+TEST(Lesson16, SnapshotMatchesTheGolden) {
+  auto runner = startLesson(kLesson, {});
+  runner->renderFrame();
+  testing::expectMatchesGolden(runner->readImage(), kLesson);
+  EXPECT_EQ(runner->glErrors(), 0);
+}
+
+TEST(Lesson16, EveryViewIsCleanAndDistinct) {
+  auto runner = startLesson(kLesson, {});
+  testing::expectEveryViewCleanAndDistinct(*runner);
+}
+
+// One runner (one GL context) at a time: its picture, and no GL error on the way.
+Image picture(const std::string& lesson, const std::vector<std::string>& sets) {
+  auto runner = startLesson(lesson, sets);
+  runner->renderFrame();
+  EXPECT_EQ(runner->glErrors(), 0) << lesson << " " << testing::label(sets);
+  return runner->readImage();
+}
+
+struct Hosted {
+  std::string key, lesson;
+  std::vector<std::string> host_sets;    // lesson 16's
+  std::vector<std::string> lesson_sets;  // the same frame, asked of the lesson itself
+};
+
+// Each technique's picture is its lesson's: the settings lesson 16 gives it (no inset, no
+// counting atomics), its knobs as the lesson's own parameters.
+TEST(Lesson16, EachTechniqueDrawsItsLessonsPictureByteForByte) {
+  const std::vector<Hosted> cases = {
+      {"hard", "04_bias_offset", {"hard/shadow.size=512"}, {"inset=false", "shadow.size=512"}},
+      {"pcf",
+       "05_pcf_dithered",
+       {"pcf/pcf.mode=poisson", "pcf/pcf.taps=12"},
+       {"inset=false", "pcf.count=false", "pcf.mode=poisson", "pcf.taps=12"}},
+      {"filtered",
+       "13_filterable_maps",
+       {"filtered/filter.method=esm"},
+       {"inset=false", "filter.method=esm"}},
+      {"pcss",
+       "14_soft_shadows",
+       {"light.radius=0.2"},
+       {"inset=false", "pcss.count=false", "pcss.light_radius=0.2"}},
+      {"cube", "11_omni_cube", {"cube/omni.method=tetrahedron"}, {"omni.method=tetrahedron"}},
+      {"volumes", "09_shadow_volumes", {}, {}},
+  };
+  for (const Hosted& c : cases) {
+    std::vector<std::string> host = {"scene=torus_pyramid", "technique=" + c.key};
+    host.insert(host.end(), c.host_sets.begin(), c.host_sets.end());
+    std::vector<std::string> own = {"scene=torus_pyramid"};
+    own.insert(own.end(), c.lesson_sets.begin(), c.lesson_sets.end());
+    EXPECT_EQ(testing::pixelsDiffering(picture(kLesson, host), picture(c.lesson, own), 0), 0u)
+        << c.key;
+  }
+  // Cascades take a sun: the street's.
+  EXPECT_EQ(
+      testing::pixelsDiffering(
+          picture(kLesson, {"scene=street", "technique=cascades", "cascades/cascades.count=3"}),
+          picture("12_cascades", {"scene=street", "cascades.count=3"}), 0),
+      0u);
+  auto runner = startLesson(kLesson, {"technique=filtered"});
+  runner->renderFrame();
+  EXPECT_EQ(testing::reportString(*runner, "technique_lesson"), "13_filterable_maps");
+}
+
+// A technique's texture storage, as the GL holds it: its map, or its atlas, or nothing.
+TEST(Lesson16, TextureBytesAreTheTechniquesMaps) {
+  auto runner = startLesson(kLesson, {"technique=hard", "hard/shadow.size=512"});
+  runner->renderFrame();
+  EXPECT_EQ(testing::reportNumber(*runner, "technique_texture_bytes"), 512.0 * 512.0 * 4.0);
+  ASSERT_EQ(runner->params().assign("technique=volumes"), "");
+  runner->renderFrame();
+  EXPECT_EQ(testing::reportNumber(*runner, "technique_texture_bytes"), 0.0) << "the stencil's";
+  ASSERT_EQ(runner->params().assign("technique=cube"), "");
+  ASSERT_EQ(runner->params().assign("cube/cube.size=256"), "");
+  runner->renderFrame();
+  EXPECT_EQ(testing::reportNumber(*runner, "technique_texture_bytes"), 6.0 * 256 * 256 * 4);
+
+  runner.reset();
+  auto street = startLesson(kLesson, {"scene=street", "technique=cascades"});
+  street->renderFrame();
+  const auto json = testing::report(*street);
+  EXPECT_EQ(json["technique_texture_bytes"], json["technique_report"]["atlas_bytes"]);
+  // Lesson 12's shimmer measurement (run for the report) keeps an atlas and a frame of its own:
+  // not the sun's, on the next frame either.
+  street->renderFrame();
+  const auto again = testing::report(*street);
+  EXPECT_EQ(again["technique_texture_bytes"], again["technique_report"]["atlas_bytes"]);
+  EXPECT_GT(again["technique_texture_bytes"].get<double>(), 0.0);
+}
+
+// Cascades split a sun's view; a cube surrounds a lamp. Asked of the other light, each says
+// why, and the frame is the one without a shadow.
+TEST(Lesson16, ATechniqueThatCannotServeTheLightSaysSoAndDrawsNoShadow) {
+  for (const auto& [scene, key] : std::vector<std::pair<std::string, std::string>>{
+           {"contact", "cascades"}, {"street", "cube"}}) {
+    auto runner = startLesson(kLesson, {"scene=" + scene, "technique=" + key});
+    runner->renderFrame();
+    EXPECT_NE(testing::reportString(*runner, "technique_cannot"), "") << key;
+    EXPECT_NE(runner->checkConsistency(), "") << key << ": the command line refuses it";
+    EXPECT_EQ(runner->glErrors(), 0) << key;
+    const Image drawn = runner->readImage();
+    runner.reset();
+    EXPECT_EQ(
+        testing::pixelsDiffering(
+            drawn, picture(kLesson, {"scene=" + scene, "technique=" + key, "shadow.off=true"}), 0),
+        0u)
+        << key;
+  }
+  auto fine = startLesson(kLesson, {"scene=street", "technique=cascades"});  // the only runner
+  fine->renderFrame();
+  EXPECT_EQ(testing::reportString(*fine, "technique_cannot"), "");
+  EXPECT_EQ(fine->checkConsistency(), "");
+}
+
+// A caster moves while the hard map is drawn (no parameter changes: the runner tells the host
+// its map is dirty); PCF's map, kept from before, must be drawn again when PCF comes back: the
+// host's dirty bits are every technique's. A moved light reaches it as a parameter.
+TEST(Lesson16, AChangeMadeWhileAnotherTechniqueDrewIsSeenWhenItComesBack) {
+  const glm::mat4 moved = glm::translate(glm::mat4(1.0f), glm::vec3(0.7f, 0.0f, -0.4f));
+  const auto seen = [&](bool light) {
+    auto runner = startLesson(kLesson, {"technique=pcf"});
+    runner->renderFrame();
+    ASSERT_EQ(runner->params().assign("technique=hard"), "");
+    runner->renderFrame();
+    if (light) {
+      ASSERT_EQ(runner->params().assign("light.pos=-2,5,3"), "");
+    } else {
+      runner->host().setObjectModel(1, moved * runner->host().presetModel(1));
+    }
+    runner->renderFrame();
+    ASSERT_EQ(runner->params().assign("technique=pcf"), "");
+    runner->renderFrame();
+    const Image back = runner->readImage();
+    // The same frame drawn afresh (one runner, one GL context, at a time).
+    runner.reset();
+    runner = startLesson(kLesson, {"technique=pcf"});
+    if (light) {
+      ASSERT_EQ(runner->params().assign("light.pos=-2,5,3"), "");
+    } else {
+      runner->host().setObjectModel(1, moved * runner->host().presetModel(1));
+    }
+    runner->renderFrame();
+    EXPECT_EQ(testing::pixelsDiffering(back, runner->readImage(), 0), 0u)
+        << (light ? "the light moved: " : "a caster moved: ") << "a stale map";
+  };
+  seen(false);
+  seen(true);
+}
+
+// One light and one set of pixels for all: a spot map's frustum does not shrink what is
+// counted (the bulb's 90° spot leaves the walls beside it out of its map), and PCF is scored
+// against the scene's light, not the area light lesson 05 matches to its kernel.
+TEST(Lesson16, EveryTechniqueIsScoredOnTheSamePixelsAgainstTheSameLight) {
+  const auto measured = [](const std::string& key) {
+    return testing::measuredReport(kLesson, {"scene=bulb", "technique=" + key}, 160, 120);
+  };
+  const auto hard = measured("hard"), cube = measured("cube"), pcf = measured("pcf");
+  EXPECT_EQ(hard["error"]["counted_pixels"], cube["error"]["counted_pixels"]);
+  EXPECT_EQ(pcf["error"]["counted_pixels"], cube["error"]["counted_pixels"]);
+  EXPECT_EQ(pcf["truth_area_radius"], 0.0);
+  EXPECT_GT(pcf["technique_report"]["truth_area_radius"].get<double>(), 0.0)
+      << "lesson 05's own match, reported, not used";
+  // The map covers a cone of the bulb's light: outside it, a map says lit where the truth has
+  // shadow. The cube sees every direction.
+  EXPECT_GT(hard["error"]["vis_mae"].get<double>(), 2.0 * cube["error"]["vis_mae"].get<double>());
+}
+
+}  // namespace
+}  // namespace shadows
