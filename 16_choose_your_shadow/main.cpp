@@ -80,8 +80,9 @@ class ChooseYourShadow final : public Lesson {
       keys.push_back(spec.key);
       hosted_.push_back(std::make_unique<HostedLesson>(std::move(spec)));
     }
-    technique_ = p.addChoice("technique", keys, "pcf", "which lesson's technique draws the shadow",
-                             kDirtyShadowMap);
+    // A switch dirties no map: a technique's kept map is drawn again only if something moved
+    // while another drew (render() hands every technique what the host was told).
+    technique_ = p.addChoice("technique", keys, "pcf", "which lesson's technique draws the shadow");
     light_radius_ = p.addFloat("light.radius", 0.0f, 0.0f, 1.0f,
                                "the light's radius: 0 a point (hard shadows), else a disk; the "
                                "truth and PCSS take it");

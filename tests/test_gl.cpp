@@ -129,3 +129,39 @@ TEST_F(GlTest, VariantsCompileOncePerSetOfDefinesAndSayWhichRan) {
 
 }  // namespace
 }  // namespace shadows
+
+namespace shadows {
+namespace {
+
+// What lesson 16 reports of a technique (TextureBytes, gl/gl.hpp): a texture's storage is on
+// the tally that was current when it was created, every level and face of it, moved with the
+// texture and off the tally when it goes; one created under no tally counts nowhere.
+TEST_F(GlTest, TexturesTallyTheirStorageWhileTheyLive) {
+  TextureBytes tally;
+  {
+    const TextureBytes::Scope counted(tally);
+    Texture depth16 = Texture::depth(64, 32, 16);  // 2 bytes a texel
+    EXPECT_EQ(tally.bytes(), 64 * 32 * 2);
+    Texture cube = Texture::depthCube(16, 24);  // 6 faces of 4 bytes a texel
+    EXPECT_EQ(tally.bytes(), 64 * 32 * 2 + 6 * 16 * 16 * 4);
+    cube = Texture();
+    EXPECT_EQ(tally.bytes(), 64 * 32 * 2);
+    // Every level: 8x8, 4x4, 2x2, 1x1 of RG32F (8 bytes).
+    Texture mipmapped = Texture::color(8, 8, GL_RG32F, /*mipmapped=*/true);
+    EXPECT_EQ(tally.bytes(), 64 * 32 * 2 + 8 * (64 + 16 + 4 + 1));
+    {
+      const auto uncounted = TextureBytes::Scope::none();
+      const Texture measuring = Texture::color(32, 32, GL_RGBA32F);
+      EXPECT_EQ(tally.bytes(), 64 * 32 * 2 + 8 * 85) << "a measurement's target";
+    }
+    Texture moved = std::move(depth16);
+    EXPECT_EQ(tally.bytes(), 64 * 32 * 2 + 8 * 85) << "counted once, moved or not";
+  }
+  EXPECT_EQ(tally.bytes(), 0) << "every texture gone, every byte off the tally";
+  const Texture outside = Texture::color(4, 4, GL_RGBA8);  // no Scope: the runner's own
+  EXPECT_EQ(tally.bytes(), 0);
+  EXPECT_EQ(GlErrorLog::poll(), 0);
+}
+
+}  // namespace
+}  // namespace shadows
