@@ -114,7 +114,7 @@ class LightMaps final : public Lesson {
   }
 
   void render(Frame& f) override {
-    const size_t moving = movingObject(f.scene);
+    const size_t moving = f.scene.movingObject(moving_());
     // The caster moves after the bake: everything live follows it (the map, the truth). The
     // others stand where the preset put them (one that moved before move.object changed too).
     const glm::mat4 offset = glm::translate(glm::mat4(1.0f), glm::vec3(move_x_(), 0.0f, move_z_()));
@@ -302,17 +302,6 @@ class LightMaps final : public Lesson {
   }
 
  private:
-  // The object move.* moves: its index, or the last caster where the index is none (a floor
-  // that moved would take every baked shadow with it in the hybrid).
-  size_t movingObject(const Scene& scene) const {
-    const int last = static_cast<int>(scene.objects.size()) - 1;
-    const auto chosen = static_cast<size_t>(moving_() < 0 ? last : std::min(moving_(), last));
-    if (scene.objects[chosen].caster) return chosen;
-    for (size_t k = scene.objects.size(); k-- > 0;) {
-      if (scene.objects[k].caster) return k;
-    }
-    return chosen;
-  }
   int samplesPerTexel() const {
     const int k = TruthLight::sampleSide(samples_());
     return k * k;
@@ -333,13 +322,15 @@ class LightMaps final : public Lesson {
     const bool current = bake_at_.name() == "current";
     const glm::vec3 light = current ? f.light.position : f.scene.light.position;
     const glm::vec3 target = current ? f.light.target : f.scene.light.target;
+    // A preset's sun is a sun in its bake too (lesson 16's street), not a lamp where it stands.
+    const bool directional = current ? f.light.directional : f.scene.light.directional;
     char key[512];
     std::snprintf(key, sizeof key, "%s|%g|%d%d|%d|%g|%d|%d|%zu|%g,%g,%g|%g,%g,%g|%g,%g",
                   f.scene.name.c_str(), density_(), padding_(), centres_() ? 1 : 0,
                   samplesPerTexel(), radius_(), current ? 1 : 0, mode_() == Mode::Hybrid ? 1 : 0,
                   moving, light.x, light.y, light.z, target.x, target.y, target.z,
                   current ? move_x_() : 0.0f, current ? move_z_() : 0.0f);
-    const std::string inputs = key + std::string(current && f.light.directional ? "|dir" : "");
+    const std::string inputs = key + std::string(directional ? "|dir" : "");
     if (inputs == baked_for_) return;
     baked_for_ = inputs;
     std::vector<SceneObject> objects = f.scene.objects;
@@ -382,7 +373,7 @@ class LightMaps final : public Lesson {
     atlas_.position = {};
     atlas_.normal = {};
     request.light.position = light;
-    request.light.directional = current && f.light.directional;
+    request.light.directional = directional;
     const glm::vec3 axis = target - light;
     request.light.direction =
         glm::dot(axis, axis) > 0.0f ? glm::normalize(axis) : glm::vec3(0, -1, 0);

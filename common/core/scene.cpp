@@ -243,4 +243,14 @@ void Scene::worldTriangles(std::vector<glm::vec3>& positions,
   }
 }
 
+size_t Scene::movingObject(int asked) const {
+  const int last = static_cast<int>(objects.size()) - 1;
+  const auto chosen = static_cast<size_t>(asked < 0 ? last : std::min(asked, last));
+  if (objects[chosen].caster) return chosen;
+  for (size_t k = objects.size(); k-- > 0;) {
+    if (objects[k].caster) return k;
+  }
+  return chosen;
+}
+
 }  // namespace shadows

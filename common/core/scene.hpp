@@ -94,6 +94,10 @@ struct Scene {
   Bounds casterBounds(glm::vec3 lightPosition, bool directional, glm::vec3 lightDirection) const;
   // All triangles in world space, in object order (the truth's input).
   void worldTriangles(std::vector<glm::vec3>& positions, std::vector<glm::uvec3>& triangles) const;
+  // The object a `move.object` of `asked` moves (lessons 15 and 16): that index (-1: the last
+  // object), or the last caster where that one casts nothing (a floor that moved would take
+  // every baked shadow with it).
+  size_t movingObject(int asked) const;
 };
 
 const std::vector<std::string>& scenePresets();
