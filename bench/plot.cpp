@@ -398,10 +398,22 @@ std::string frontPlotData(const std::filesystem::path& dat, const std::string& n
   }
 
   // Series (Sweep::series): each row's, by the value its settings give the parameter, and a
-  // colour each, in order of first appearance.
+  // colour each, in the order the sweep's values name them (a lesson that lists them in its
+  // choice's order gets its panel's colours), whichever rows ran.
   std::vector<std::string> series_names;
   std::vector<size_t> series_of(t.rows.size(), 0);
   if (!sweep.series.empty()) {
+    for (const Axis& axis : sweep.axes) {
+      for (const std::string& value : axis.values) {
+        for (const std::string& set : settingsOf(axis, value).second) {
+          if (set.rfind(sweep.series + "=", 0) != 0) continue;
+          const std::string name = set.substr(sweep.series.size() + 1);
+          if (std::find(series_names.begin(), series_names.end(), name) == series_names.end()) {
+            series_names.push_back(name);
+          }
+        }
+      }
+    }
     for (size_t r = 0; r < t.rows.size(); ++r) {
       std::string value;
       for (const std::string& set : rowSettings(sweep, t, r)) {

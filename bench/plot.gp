@@ -47,7 +47,8 @@ do for [e = -6:6] {
 }
 set xlabel xlabel font f10
 if (strlen(note) > 0) {
-  set label 1 note at screen key_x, key_y - 74.0 / height left font f10 tc rgb "#555555"
+  set label 1 note at screen key_x, key_y - (74.0 + 20.0 * words(series)) / height left font f10 \
+      tc rgb "#555555"
 }
 do for [p = 1:npanels] {
   set lmargin at screen real(word(p_left, p))

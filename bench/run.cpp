@@ -52,6 +52,16 @@ void Bench::run(benchmark::State& state, size_t index) {
       const ErrorState& e = r.measureError();
       result.error = e.metrics;
       result.error_valid = e.valid;
+      // A caster moved off its preset's place (lesson 16's move.x) is another truth, though
+      // the light is the same: its rows must not share a front with the unmoved scene's.
+      for (size_t k = 0; k < r.scene().objects.size(); ++k) {
+        const glm::vec3 d = glm::vec3(r.scene().objects[k].model[3] - r.host().presetModel(k)[3]);
+        if (r.scene().objects[k].model == r.host().presetModel(k)) continue;
+        char moved[128];
+        std::snprintf(moved, sizeof moved, ", %s moved by (%g, %g, %g)",
+                      r.scene().objects[k].name.c_str(), d.x, d.y, d.z);
+        result.error.truth += moved;
+      }
       if (const auto* texels = r.texels().measure()) {
         result.undersampled_pct = texelStats(*texels).undersampled_pct;
       }
