@@ -1,13 +1,15 @@
 // Lesson 16's sweep for bench_sweep (bench/README.md): every technique at a few of its own
-// settings, on each preset, under a point light and a disk of radius 0.1: one front across
-// techniques a preset and a light, each technique's own front in its colour beneath it.
+// settings (in the order of the lesson's choice, so the plot's colours are the panel's), on
+// each preset, under a point light, a disk of radius 0.1, and the disk with the last caster
+// moved 1.2 along x after the light map's bake: one front across techniques a preset and a
+// light, each technique's own front in its colour beneath it.
 // Maps are rendered every frame (the cost of a scene where something always moves); what a
 // technique cannot do with a preset's light (cascades under a lamp, a cube under the sun) the
 // lesson refuses, and the sweep leaves out.
 #include "lesson/sweep_spec.hpp"
 
 SHADOWS_SWEEP(
-    {.scenes = {"contact", "street", "bulb", "torus_pyramid"},
+    {.scenes = {"contact", "street", "bulb", "yard", "torus_pyramid"},
      .axes = {{"setting",
                {"hard_1024:technique=hard hard/shadow.size=1024",
                 "hard_2048:technique=hard hard/shadow.size=2048",
@@ -33,8 +35,13 @@ SHADOWS_SWEEP(
                 "cube_1024:technique=cube cube/cube.size=1024",
                 "tetrahedron_512:technique=cube cube/omni.method=tetrahedron cube/cube.size=512",
                 "paraboloids_512:technique=cube cube/omni.method=paraboloid cube/cube.size=512",
+                "lightmap_16:technique=lightmap",
+                "lightmap_32:technique=lightmap lightmap/lightmap.texels_per_unit=32",
+                "lightmap_hybrid:technique=lightmap lightmap/lightmap.mode=hybrid",
                 "volumes:technique=volumes"}},
-              {"light.radius", {"0", "0.1"}}},
+              {"light",
+               {"point:light.radius=0", "disk:light.radius=0.1",
+                "disk_moved:light.radius=0.1 move.x=1.2"}}},
      .fixed = {"shadow.cache=false"},
      .plot_metrics = {"vis_mae"},
      .series = "technique"});

@@ -60,6 +60,10 @@ TEST(Lesson16, EachTechniqueDrawsItsLessonsPictureByteForByte) {
        {"inset=false", "pcss.count=false", "pcss.light_radius=0.2"}},
       {"cube", "11_omni_cube", {"cube/omni.method=tetrahedron"}, {"omni.method=tetrahedron"}},
       {"volumes", "09_shadow_volumes", {}, {}},
+      {"lightmap",
+       "15_light_maps",
+       {"lightmap/lightmap.mode=hybrid", "light.radius=0.2", "move.x=0.8"},
+       {"inset=false", "lightmap.mode=hybrid", "lightmap.light_radius=0.2", "move.x=0.8"}},
   };
   for (const Hosted& c : cases) {
     std::vector<std::string> host = {"scene=torus_pyramid", "technique=" + c.key};
@@ -78,6 +82,26 @@ TEST(Lesson16, EachTechniqueDrawsItsLessonsPictureByteForByte) {
   auto runner = startLesson(kLesson, {"technique=filtered"});
   runner->renderFrame();
   EXPECT_EQ(testing::reportString(*runner, "technique_lesson"), "13_filterable_maps");
+}
+
+// One caster moved for every technique (move.x): each dynamic technique draws its shadow where
+// it is now, and lesson 15's light map, baked where the preset put it, does not follow.
+TEST(Lesson16, AMovedCasterIsFollowedByEveryTechniqueButTheBake) {
+  const auto vis = [](const std::string& key, const std::string& x) {
+    return testing::measuredReport(kLesson, {"scene=yard", "technique=" + key, "move.x=" + x}, 160,
+                                   120)["error"]["vis_mae"]
+        .get<double>();
+  };
+  for (const char* key : {"hard", "volumes"}) {
+    EXPECT_LT(vis(key, "1.2"), 1.5 * vis(key, "0")) << key << " follows the ball";
+  }
+  const double baked = vis("lightmap", "0"), moved = vis("lightmap", "1.2");
+  EXPECT_GT(moved, 2.0 * baked) << "the bake keeps the ball's shadow where it was";
+  // The picture differs where the ball was: a map technique's frame changes with the move.
+  EXPECT_GT(
+      testing::pixelsDiffering(picture(kLesson, {"scene=yard", "technique=hard"}),
+                               picture(kLesson, {"scene=yard", "technique=hard", "move.x=1.2"}), 8),
+      100u);
 }
 
 // A technique's texture storage, as the GL holds it: its map, or its atlas, or nothing.
@@ -163,6 +187,31 @@ TEST(Lesson16, AChangeMadeWhileAnotherTechniqueDrewIsSeenWhenItComesBack) {
   };
   seen(false);
   seen(true);
+}
+
+// A kept map stays kept: a switch to another technique and back, and the runner's frames
+// without shadow (which turn shadow.off on and off), redraw no map while nothing moved; a moved
+// caster redraws the returning technique's map once.
+TEST(Lesson16, AKeptMapIsDrawnAgainOnlyWhenSomethingMoved) {
+  auto runner = startLesson(kLesson, {"technique=pcf"});
+  runner->renderFrame();
+  runner->renderFrame();
+  EXPECT_EQ(testing::counter(*runner, "shadow_map_renders"), 0);
+  runner->baseline().render();
+  runner->renderFrame();
+  EXPECT_EQ(testing::counter(*runner, "shadow_map_renders"), 0) << "after a frame without shadow";
+  ASSERT_EQ(runner->params().assign("technique=hard"), "");
+  runner->renderFrame();
+  ASSERT_EQ(runner->params().assign("technique=pcf"), "");
+  runner->renderFrame();
+  EXPECT_EQ(testing::counter(*runner, "shadow_map_renders"), 0) << "back from another technique";
+  ASSERT_EQ(runner->params().assign("technique=hard"), "");
+  runner->renderFrame();
+  ASSERT_EQ(runner->params().assign("move.x=0.5"), "");
+  runner->renderFrame();
+  ASSERT_EQ(runner->params().assign("technique=pcf"), "");
+  runner->renderFrame();
+  EXPECT_EQ(testing::counter(*runner, "shadow_map_renders"), 1) << "a caster moved meanwhile";
 }
 
 // One light and one set of pixels for all: a spot map's frustum does not shrink what is

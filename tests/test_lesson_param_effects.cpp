@@ -179,6 +179,7 @@ const std::map<std::string, std::vector<std::string>> kActsWhen = {
     // need what their own lesson needs: 05's taps a Poisson disk; 14's search a light with a
     // size; cascades a sun.
     {"16_choose_your_shadow/pcf/pcf.taps", {"technique=pcf", "pcf/pcf.mode=poisson"}},
+    {"16_choose_your_shadow/move.object", {"move.x=1"}},
     {"16_choose_your_shadow/pcss/pcss.search_taps", {"technique=pcss", "light.radius=0.3"}},
     {"16_choose_your_shadow/pcss/pcf.taps", {"technique=pcss", "light.radius=0.3"}},
     {"16_choose_your_shadow/cascades/cascades.count", {"technique=cascades", "scene=street"}},

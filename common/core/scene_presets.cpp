@@ -383,6 +383,34 @@ Scene stacked() {
   return s;
 }
 
+// Lesson 16: a yard that stands still (a wall, two posts, a bench, a crate) and one thing
+// that moves, a ball, the last caster: what a light map bakes once and what it cannot follow.
+Scene yard() {
+  Scene s;
+  s.objects.push_back(floorObject(8.0f, 0.0f));
+  s.objects.push_back(
+      {"wall", makeBox({2.4f, 0.6f, 0.12f}), translate({-0.4f, 0.6f, -2.2f}), {0.7f, 0.6f, 0.5f}});
+  for (const float x : {-2.6f, 2.2f}) {
+    s.objects.push_back(
+        {"post", makeBox({0.1f, 0.9f, 0.1f}), translate({x, 0.9f, -0.6f}), {0.55f, 0.42f, 0.3f}});
+  }
+  s.objects.push_back(
+      {"bench", makeBox({0.9f, 0.05f, 0.3f}), translate({0.3f, 0.5f, 0.9f}), {0.62f, 0.5f, 0.38f}});
+  for (const float x : {-0.45f, 1.05f}) {
+    s.objects.push_back({"bench_leg",
+                         makeBox({0.05f, 0.225f, 0.25f}),
+                         translate({x, 0.225f, 0.9f}),
+                         {0.45f, 0.36f, 0.28f}});
+  }
+  s.objects.push_back(
+      {"crate", makeBox(glm::vec3(0.35f)), translate({-1.8f, 0.35f, 1.2f}), {0.8f, 0.62f, 0.3f}});
+  s.objects.push_back(
+      {"ball", makeSphere(0.4f, 48, 24), translate({1.6f, 0.4f, -0.4f}), {0.5f, 0.8f, 0.4f}});
+  s.light = {false, {-2.5f, 6.0f, 3.0f}, {0.2f, 0.3f, -0.2f}, 75.0f, 10.0f, 2.0f, 16.0f};
+  s.camera = {{0.8f, 3.6f, 7.0f}, {0.0f, 0.4f, -0.2f}, 45.0f, 0.1f, 100.0f};
+  return s;
+}
+
 }  // namespace
 
 Scene makeScene(const std::string& preset) {
@@ -407,6 +435,8 @@ Scene makeScene(const std::string& preset) {
     s.camera = {{-3.0f, 0.8f, -1.0f}, {-1.0f, 0.0f, 4.0f}, 45.0f, 0.1f, 100.0f};
   } else if (preset == "fence") {
     s = fence();
+  } else if (preset == "yard") {
+    s = yard();
   } else if (preset == "contact") {
     s = contact();
   } else if (preset == "overlap") {

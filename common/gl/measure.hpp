@@ -89,6 +89,7 @@ class Measure {
   // few frames later when its answer is in, the disjoint ones (the GPU's clock reset) dropped.
   // None where there is no timer.
   double medianGpuFrameMs() const { return median(gpu_frame_ms_); }
+  double lastGpuFrameMs() const { return gpu_frame_ms_.empty() ? 0.0 : gpu_frame_ms_.back(); }
   size_t gpuTimedFrames() const { return gpu_frame_ms_.size(); }
 
  private:

@@ -25,7 +25,7 @@ bool copyValue(const Param& from, Param& to) {
     return true;
   }
   bool changed = false;
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < (to.kind == ParamKind::Vec3 ? 3 : 1); ++i) {
     const double v = std::clamp(from.value[i], to.min, to.max);
     changed = changed || v != to.value[i];
     to.value[i] = v;
@@ -84,7 +84,11 @@ void HostedLesson::init(const Params& host) {
 void HostedLesson::sync(const Params& host) {
   const auto take = [&](const Param* from, const std::string& name) {
     Param* to = params_.find(name);
-    if (from != nullptr && to != nullptr && copyValue(*from, *to)) params_.markDirty(to->affects);
+    if (from == nullptr || to == nullptr || !copyValue(*from, *to)) return;
+    // The runner's frames without shadow turn shadow.off on and off again and leave the map
+    // alone (CONTRACTS.md, baseline_frame_ms): a kept map is still good when it comes back.
+    // A student's own toggle reaches the host's dirty bits, which are this lesson's too.
+    if (name != "shadow.off") params_.markDirty(to->affects);
   };
   for (const Param& mine : params_.all()) {
     const bool knob =
