@@ -383,8 +383,7 @@ Scene stacked() {
   return s;
 }
 
-// Lesson 16: a yard that stands still (a wall, two posts, a bench, a crate) and one thing
-// that moves, a ball, the last caster: what a light map bakes once and what it cannot follow.
+// Lesson 16: a yard that stands still and one ball, the last caster, a light map cannot follow.
 Scene yard() {
   Scene s;
   s.objects.push_back(floorObject(8.0f, 0.0f));
