@@ -8,29 +8,21 @@ namespace shadows {
 
 namespace {
 
-// `from`'s value into `to` (a parameter of the same name or a knob's), clamped to `to`'s range;
-// true when it changed. A choice goes by its name, and only to a choice `to` has (the host's
-// view `air` is not a hosted lesson's).
-bool copyValue(const Param& from, Param& to) {
-  if (from.kind != to.kind) return false;
+// `from`'s value into `to` (a parameter of the same name, a knob's or a tie's), clamped to
+// `to`'s range. A choice goes by its name, and only to a choice `to` has (the host's view `air`
+// is not a hosted lesson's).
+void copyValue(const Param& from, Param& to) {
+  if (from.kind != to.kind) return;
   if (to.kind == ParamKind::Choice) {
     const auto it = std::find(to.choices.begin(), to.choices.end(), from.choice());
-    if (it == to.choices.end() || to.is(from.choice())) return false;
-    to.value[0] = static_cast<double>(it - to.choices.begin());
-    return true;
-  }
-  if (to.kind == ParamKind::String) {
-    if (to.string_value == from.string_value) return false;
+    if (it != to.choices.end()) to.value[0] = static_cast<double>(it - to.choices.begin());
+  } else if (to.kind == ParamKind::String) {
     to.string_value = from.string_value;
-    return true;
+  } else {
+    for (int i = 0; i < (to.kind == ParamKind::Vec3 ? 3 : 1); ++i) {
+      to.value[i] = std::clamp(from.value[i], to.min, to.max);
+    }
   }
-  bool changed = false;
-  for (int i = 0; i < (to.kind == ParamKind::Vec3 ? 3 : 1); ++i) {
-    const double v = std::clamp(from.value[i], to.min, to.max);
-    changed = changed || v != to.value[i];
-    to.value[i] = v;
-  }
-  return changed;
 }
 
 }  // namespace
@@ -82,13 +74,13 @@ void HostedLesson::init(const Params& host) {
 }
 
 void HostedLesson::sync(const Params& host) {
+  // Values only: what a change dirties reaches this lesson as the host's dirty bits
+  // (markDirty), the same bits as its own parameter's. So what changes the host silently
+  // stays silent here too: the runner's frames without shadow turn shadow.off on and off and
+  // leave the map alone (CONTRACTS.md, baseline_frame_ms).
   const auto take = [&](const Param* from, const std::string& name) {
     Param* to = params_.find(name);
-    if (from == nullptr || to == nullptr || !copyValue(*from, *to)) return;
-    // The runner's frames without shadow turn shadow.off on and off again and leave the map
-    // alone (CONTRACTS.md, baseline_frame_ms): a kept map is still good when it comes back.
-    // A student's own toggle reaches the host's dirty bits, which are this lesson's too.
-    if (name != "shadow.off") params_.markDirty(to->affects);
+    if (from != nullptr && to != nullptr) copyValue(*from, *to);
   };
   for (const Param& mine : params_.all()) {
     const bool knob =

@@ -50,7 +50,9 @@ class HostedLesson {
   // GL resources, once the runner has declared its shared parameters into `host` (the lesson
   // gets a copy of each it does not declare itself).
   void init(const Params& host);
-  // The host's values into the lesson's parameters, marking dirty what they affect.
+  // The host's values into the lesson's parameters. Values only: a host hands the lesson its
+  // own dirty bits (markDirty), which every change to its parameters sets as this lesson's
+  // parameter of the same name (or knob, or tie) would.
   void sync(const Params& host);
   // A map to render again, a texture to re-create: what the host was told (its dirty bits,
   // which it consumes once for all the lessons it hosts) is this lesson's to act on too.
