@@ -15,7 +15,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "core/json.hpp"
 #include "lesson/lesson.hpp"
@@ -117,11 +116,7 @@ class LightMaps final : public Lesson {
     const size_t moving = f.scene.movingObject(moving_());
     // The caster moves after the bake: everything live follows it (the map, the truth). The
     // others stand where the preset put them (one that moved before move.object changed too).
-    const glm::mat4 offset = glm::translate(glm::mat4(1.0f), glm::vec3(move_x_(), 0.0f, move_z_()));
-    for (size_t k = 0; k < f.scene.objects.size(); ++k) {
-      f.runner.setObjectModel(k,
-                              (k == moving ? offset : glm::mat4(1.0f)) * f.runner.presetModel(k));
-    }
+    f.placeMoved(moving, glm::vec3(move_x_(), 0.0f, move_z_()));
     if (mode_() != Mode::Map) {
       requestBake(f, moving);
     } else if (!baked_for_.empty()) {  // map mode bakes nothing, and shows nothing baked

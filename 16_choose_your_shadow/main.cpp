@@ -19,7 +19,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
-#include <glm/gtc/matrix_transform.hpp>
 #include <iterator>
 #include <memory>
 #include <string>
@@ -275,12 +274,7 @@ class ChooseYourShadow final : public Lesson {
   // The moved object where the preset put it plus the move (lesson 15's rule: Scene::
   // movingObject), every other object where the preset put it.
   void moveObject(const Frame& f) const {
-    const size_t moving = f.scene.movingObject(moving_());
-    const glm::mat4 offset = glm::translate(glm::mat4(1.0f), glm::vec3(move_x_(), 0.0f, move_z_()));
-    for (size_t k = 0; k < f.scene.objects.size(); ++k) {
-      f.runner.setObjectModel(k,
-                              (k == moving ? offset : glm::mat4(1.0f)) * f.runner.presetModel(k));
-    }
+    f.placeMoved(f.scene.movingObject(moving_()), glm::vec3(move_x_(), 0.0f, move_z_()));
   }
 
   // Where the current settings' points go: the preset and the light.

@@ -30,18 +30,13 @@ void copyValue(const Param& from, Param& to) {
 HostedLesson::HostedLesson(Spec spec) : spec_(std::move(spec)) {}
 
 void HostedLesson::declare(Params& host, std::function<std::string(const Params&)> idle) {
-  lesson_ = makeLesson(spec_.lesson);
-  if (!lesson_) throw std::logic_error("no lesson named " + spec_.lesson + " to host");
+  lesson_ = makeLesson(spec_.lesson);  // throws std::invalid_argument for an unknown name
   // The runner's two choices before a lesson declares, as the runner declares them for it: the
   // scene, and every view the lesson has (its shaders #define each: OpenGL ES refuses an
   // undefined name in #if).
   params_.add(host.at("scene"));
-  std::vector<View> views = {views::kShaded, views::kVisibility};
-  for (const View& v : lesson_->debugViews()) views.push_back(v);
-  views.push_back(views::kTruth);
-  views.push_back(views::kError);
   std::vector<std::string> names;
-  for (const View& v : views) names.push_back(v.str());
+  for (const View& v : lesson_->views()) names.push_back(v.str());
   params_.addChoice("view", names, names.front(), host.at("view").help);
   lesson_->declare(params_);
   for (const std::string& s : spec_.sets) {

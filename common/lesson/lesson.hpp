@@ -172,6 +172,9 @@ struct Frame {
   // uses) with `program` (common/shaders/fullscreen.vert gives vUv), no depth test: for
   // debug views computed per pixel.
   void drawFullscreen(const Program& program, bool inset = false) const;
+  // Every object where its scene preset put it, the one at `moving` moved by `offset` (lessons
+  // 15 and 16's move.*: Scene::movingObject says which).
+  void placeMoved(size_t moving, glm::vec3 offset) const;
 };
 
 // What Lesson::reportPixels gets: the texel pass (null without a map), row by row from the
@@ -213,6 +216,14 @@ class Lesson {
   // Debug views beyond shaded and visibility (the runner adds truth and error), each a constant
   // the lesson declares (view.hpp) and its render() compares frame.shows(kX) against.
   virtual std::vector<View> debugViews() const { return {}; }
+  // The `view` parameter's choices, in order: shaded, visibility, the debug views, truth, error.
+  std::vector<View> views() const {
+    std::vector<View> all = {views::kShaded, views::kVisibility};
+    for (const View& v : debugViews()) all.push_back(v);
+    all.push_back(views::kTruth);
+    all.push_back(views::kError);
+    return all;
+  }
   virtual void declare(Params& params) = 0;  // lesson parameters
   virtual void init() = 0;                   // GL resources (context is current)
   virtual void render(Frame& frame) = 0;     // draw frame.shown into frame.target

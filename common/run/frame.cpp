@@ -1,5 +1,6 @@
 // What a lesson draws with: Frame's helpers (the runner's half is SceneHost, scene_host.cpp).
 #include <algorithm>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "lesson/lesson.hpp"
 
@@ -52,6 +53,13 @@ void Frame::drawObject(const Program& program, size_t index) const {
 
 void Frame::drawImageInset(const Texture& image, bool fullscreen) const {
   runner.drawImageInset(*this, image, fullscreen);
+}
+
+void Frame::placeMoved(size_t moving, glm::vec3 offset) const {
+  const glm::mat4 moved = glm::translate(glm::mat4(1.0f), offset);
+  for (size_t k = 0; k < scene.objects.size(); ++k) {
+    runner.setObjectModel(k, (k == moving ? moved : glm::mat4(1.0f)) * runner.presetModel(k));
+  }
 }
 
 void Frame::drawFullscreen(const Program& program, bool inset) const {

@@ -68,10 +68,7 @@ Runner::Runner(const std::string& lessonName, std::unique_ptr<Lesson> lesson, Ru
   const std::vector<std::string> scenes = lesson_->scenes();
   params_.addChoice("scene", scenes, scenes.front(),
                     "scene preset (sets light and camera defaults)", kDirtyScene | kDirtyShadowMap);
-  views_ = {views::kShaded, views::kVisibility};
-  for (const View& v : lesson_->debugViews()) views_.push_back(v);
-  views_.push_back(views::kTruth);
-  views_.push_back(views::kError);
+  views_ = lesson_->views();
   std::vector<std::string> names;
   for (const View& v : views_) names.push_back(v.str());
   params_.addChoice("view", names, names.front(),
