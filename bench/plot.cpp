@@ -403,26 +403,28 @@ std::string frontPlotData(const std::filesystem::path& dat, const std::string& n
   std::vector<std::string> series_names;
   std::vector<size_t> series_of(t.rows.size(), 0);
   if (!sweep.series.empty()) {
-    for (const Axis& axis : sweep.axes) {
-      for (const std::string& value : axis.values) {
-        for (const std::string& set : settingsOf(axis, value).second) {
-          if (set.rfind(sweep.series + "=", 0) != 0) continue;
-          const std::string name = set.substr(sweep.series.size() + 1);
-          if (std::find(series_names.begin(), series_names.end(), name) == series_names.end()) {
-            series_names.push_back(name);
-          }
-        }
-      }
-    }
-    for (size_t r = 0; r < t.rows.size(); ++r) {
+    // The series parameter's value among `assignments` ("" where they leave it alone).
+    const auto seriesOf = [&](const std::vector<std::string>& assignments) {
       std::string value;
-      for (const std::string& set : rowSettings(sweep, t, r)) {
+      for (const std::string& set : assignments) {
         if (set.rfind(sweep.series + "=", 0) == 0) value = set.substr(sweep.series.size() + 1);
       }
-      const auto it = std::find(series_names.begin(), series_names.end(), value);
-      series_of[r] = static_cast<size_t>(it - series_names.begin());
-      if (it == series_names.end()) series_names.push_back(value);
+      return value;
+    };
+    const auto indexOf = [&](const std::string& value) {
+      const auto k = static_cast<size_t>(
+          std::find(series_names.begin(), series_names.end(), value) - series_names.begin());
+      if (k == series_names.size()) series_names.push_back(value);
+      return k;
+    };
+    for (const Axis& axis : sweep.axes) {
+      for (const std::string& v : axis.values) {
+        const std::string value = seriesOf(settingsOf(axis, v).second);
+        if (!value.empty()) indexOf(value);
+      }
     }
+    for (size_t r = 0; r < t.rows.size(); ++r)
+      series_of[r] = indexOf(seriesOf(rowSettings(sweep, t, r)));
   }
   static constexpr unsigned kSeriesColours[] = {0xe08a00, 0x2a9d3c, 0x8e44ad, 0x16a3b8,
                                                 0xd6336c, 0x7a5c2e, 0x5a6b8c, 0xb5b000};
