@@ -10,6 +10,8 @@
 //   cube       lesson 11: six faces (or two paraboloids, or four) around a point light
 //   volumes    lesson 09: the stencil counts entries into shadow; no map at all
 //   lightmap   lesson 15: baked once with the truth's rays; a caster that moves leaves it
+//   warped     lesson 10: the map's matrix warped so its texels land where the eye looks
+//              (focused, LiSPSM; plane-optimal where the scene has a plane of interest)
 // Every technique here is scored on every pixel of the frame (a lesson counts only the pixels
 // its own light covers) against one light: a point, or a disk of light.radius. What a technique
 // cannot do with this light it says, and draws the frame without a shadow.
@@ -21,9 +23,11 @@
 #include <cstdio>
 #include <iterator>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "bench_front.hpp"
 #include "core/json.hpp"
 #include "lesson/hosted_lesson.hpp"
 #include "lesson/lesson.hpp"
@@ -60,7 +64,13 @@ std::vector<HostedLesson::Spec> techniques() {
        {"inset=false"},
        {"lightmap.mode", "lightmap.texels_per_unit"},
        {{"light.radius", "lightmap.light_radius"}}},
-      {"volumes", "09_shadow_volumes", {}, {}, {}}};  // exact: nothing to trade
+      {"volumes", "09_shadow_volumes", {}, {}, {}},  // exact: nothing to trade
+      // 10's default: the plane of interest's pixels each get a texel (a map the frame's size).
+      {"warped",
+       "10_plane_optimal",
+       {"inset=false"},
+       {"light.projection", "plane", "lispsm.n", "shadow.size", "shadow.height"},
+       {}}};
 }
 
 }  // namespace
@@ -70,7 +80,7 @@ class ChooseYourShadow final : public Lesson {
   std::string title() const override { return "Choose your shadow: one scene, every technique"; }
   std::string seeds() const override {
     return "seed 000: Common Real-time Shadow Techniques; 003: Shadow Volumes Summary, Static "
-           "Shadows; the techniques of lessons 04, 05, 09, 11, 12, 13, 14 and 15 on one scene";
+           "Shadows; the techniques of lessons 04, 05, 09, 10, 11, 12, 13, 14 and 15 on one scene";
   }
   std::vector<std::string> scenes() const override {
     return {"contact", "street", "bulb", "yard", "torus_pyramid"};
@@ -114,6 +124,7 @@ class ChooseYourShadow final : public Lesson {
         return ps.at("technique").is(key) ? std::string() : "technique=" + key + " only";
       });
     }
+    bench_.emplace(p);
   }
 
   void init() override {
@@ -129,7 +140,7 @@ class ChooseYourShadow final : public Lesson {
     for (auto& h : hosted_) h->markDirty(dirty);
     HostedLesson& h = active();
     h.sync(f.params);
-    cannot_ = cannot(h.spec().key, f.light.directional);
+    cannot_ = cannot(h, f.scene, f.light.directional);
     if (!cannot_.empty()) {
       Param& off = h.params().at("shadow.off");
       if (!off.b()) {
@@ -156,6 +167,7 @@ class ChooseYourShadow final : public Lesson {
       ImGui::Text("error: vis_mae %.5f against a %s", error.metrics.vis_mae,
                   light_radius_() > 0.0f ? "disk light" : "point light");
     }
+    drawBench(f);
     recordTried(f);
     drawTried(f);
   }
@@ -182,7 +194,12 @@ class ChooseYourShadow final : public Lesson {
                                             "cube/omni.method",
                                             "cube/cube.size",
                                             "lightmap/lightmap.mode",
-                                            "lightmap/lightmap.texels_per_unit"};
+                                            "lightmap/lightmap.texels_per_unit",
+                                            "warped/light.projection",
+                                            "warped/plane",
+                                            "warped/lispsm.n",
+                                            "warped/shadow.size",
+                                            "warped/shadow.height"};
     return {{.title = "A bulb in a room",
              .goal = "A bare bulb lights every direction; lesson 05's map covers a cone of "
                      "them (vis_mae 0.073). Get vis_mae to 0.002 or less, holding at most 2 MiB "
@@ -231,16 +248,13 @@ class ChooseYourShadow final : public Lesson {
   }
 
   std::string refusal(const Params& p, const Scene& scene) const override {
-    const std::string key = p.at("technique").choice();
-    std::string why = cannot(key, p.at("light.type").is("directional"));
-    if (why.empty()) {
-      // What the technique's own lesson refuses (15's light map past its memory limit), asked
-      // of its parameters as the next frame will set them.
-      HostedLesson& h = *hosted_.at(static_cast<size_t>(p.at("technique").i()));
-      h.sync(p);
-      why = h.lesson().refusal(h.params(), scene);
-    }
-    return why.empty() ? why : "technique=" + key + ": " + why;
+    // Asked of the technique's parameters as the next frame will set them; then what its own
+    // lesson refuses (15's light map past its memory limit).
+    HostedLesson& h = *hosted_.at(static_cast<size_t>(p.at("technique").i()));
+    h.sync(p);
+    std::string why = cannot(h, scene, p.at("light.type").is("directional"));
+    if (why.empty()) why = h.lesson().refusal(h.params(), scene);
+    return why.empty() ? why : "technique=" + h.spec().key + ": " + why;
   }
 
   void report(JsonWriter& json) const override {
@@ -261,13 +275,25 @@ class ChooseYourShadow final : public Lesson {
   }
 
  private:
-  // "" or why a technique cannot draw this light's shadow.
-  static std::string cannot(const std::string& key, bool directional) {
+  // "" or why a technique cannot draw this light's shadow in this scene.
+  static std::string cannot(const HostedLesson& h, const Scene& scene, bool directional) {
+    const std::string& key = h.spec().key;
     if (key == "cascades" && !directional) {
       return "cascades split a sun's view by distance (lesson 12); this light is a lamp";
     }
     if (key == "cube" && directional) {
       return "a cube map surrounds a light at a point (lesson 11); the sun is at infinity";
+    }
+    if (key == "warped" && h.params().at("light.projection").is("plane_optimal")) {
+      // Lesson 10 would fall back to its light's own frustum: that is hard's map, not this.
+      const std::string plane = h.params().at("plane").choice();
+      const bool has = std::any_of(scene.objects.begin(), scene.objects.end(),
+                                   [&](const SceneObject& o) { return o.name == plane; });
+      if (!has) {
+        return "plane-optimal makes the map the eye's picture of one plane (lesson 10); this "
+               "scene has no " +
+               plane;
+      }
     }
     return {};
   }
@@ -322,6 +348,41 @@ class ChooseYourShadow final : public Lesson {
     tried_.record({where(f), label(f), static_cast<size_t>(technique_.param().i()),
                    ms[ms.size() / 2], error.metrics.vis_mae});
   }
+  // The bench's front for this preset and light (bench_sweep's, on its machine), the current
+  // settings ringed where the bench measured them, their error now a line where it did not.
+  void drawBench(const Frame& f) {
+    const BenchFront::Here here = bench_->at(f.params);
+    if (here.points.empty()) {
+      ImGui::TextWrapped(
+          "The bench measured this preset under a point light, a disk of 0.1 "
+          "and that disk with the last caster moved 1.2 along x: its front is "
+          "drawn under those.");
+      return;
+    }
+    ImGui::TextWrapped("The bench's front here (%s light): its %s across, vis_mae up, both log",
+                       here.light.c_str(), kBenchTime);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip(
+          "bench_sweep's points (docs/bench_16_choose_your_shadow.csv), timed on %s; "
+          "your own machine's times are on the next plot",
+          kBenchMachine);
+    }
+    std::vector<const Tried::Point*> points;
+    for (const Tried::Point& p : here.points) points.push_back(&p);
+    const ErrorState& error = f.runner.lastError();
+    const Tried::Point* ring =
+        here.current >= 0 ? &here.points[static_cast<size_t>(here.current)] : nullptr;
+    drawFront(points, ring,
+              ring == nullptr && error.valid && cannot_.empty() ? error.metrics.vis_mae : 0.0);
+    if (ring != nullptr) {
+      ImGui::TextWrapped("ringed: these settings, the bench's %s (vis_mae %.3g at %s)",
+                         ring->label.c_str(), ring->error, kBenchSize);
+    } else {
+      ImGui::TextWrapped("these settings are not among the bench's%s",
+                         error.valid && cannot_.empty() ? ": the red line is their error now" : "");
+    }
+  }
+
   void drawTried(const Frame& f) {
     const std::vector<const Tried::Point*> here = tried_.at(where(f));
     if (here.empty()) {
@@ -332,11 +393,25 @@ class ChooseYourShadow final : public Lesson {
         "Your front here (%zu setting%s measured): frame ms across, vis_mae "
         "up, both log",
         here.size(), here.size() == 1 ? "" : "s");
+    const std::string now = label(f);
+    const Tried::Point* ring = nullptr;
+    for (const Tried::Point* p : here) {
+      if (p->label == now) ring = p;
+    }
+    drawFront(here, ring, 0.0);
+    if (ImGui::Button("Forget these points")) tried_.clear();
+  }
+
+  // Points of cost against error, log both, in their technique's colour; the front's steps
+  // through them; `ring` ringed; a line at `error_now` where it is above 0.
+  void drawFront(const std::vector<const Tried::Point*>& here, const Tried::Point* ring,
+                 double error_now) const {
     double x0 = 1e300, x1 = 0, y0 = 1e300, y1 = 0;
     for (const Tried::Point* p : here) {
       x0 = std::min(x0, p->ms), x1 = std::max(x1, p->ms);
       y0 = std::min(y0, p->error), y1 = std::max(y1, p->error);
     }
+    if (error_now > 0.0) y0 = std::min(y0, error_now), y1 = std::max(y1, error_now);
     const auto logOf = [](double v) { return std::log10(std::max(v, 1e-9)); };
     const double lx0 = logOf(x0) - 0.1, lx1 = logOf(x1) + 0.1;
     const double ly0 = logOf(y0) - 0.2, ly1 = logOf(y1) + 0.2;
@@ -344,9 +419,12 @@ class ChooseYourShadow final : public Lesson {
     const ImVec2 at = ImGui::GetCursorScreenPos();
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->AddRect(at, ImVec2(at.x + width, at.y + height), IM_COL32(120, 120, 120, 255));
+    const auto y = [&](double error) {
+      return at.y + height * static_cast<float>((ly1 - logOf(error)) / (ly1 - ly0));
+    };
     const auto point = [&](const Tried::Point& p) {
       return ImVec2(at.x + width * static_cast<float>((logOf(p.ms) - lx0) / (lx1 - lx0)),
-                    at.y + height * static_cast<float>((ly1 - logOf(p.error)) / (ly1 - ly0)));
+                    y(p.error));
     };
     const std::vector<const Tried::Point*> on = Tried::front(here);
     for (size_t i = 1; i < on.size(); ++i) {  // steps: the least error for a time budget
@@ -354,25 +432,28 @@ class ChooseYourShadow final : public Lesson {
       draw->AddLine(a, ImVec2(b.x, a.y), IM_COL32(31, 95, 168, 255), 2.0f);
       draw->AddLine(ImVec2(b.x, a.y), b, IM_COL32(31, 95, 168, 255), 2.0f);
     }
-    const std::string now = label(f);
     for (const Tried::Point* p : here) {
-      const ImU32 colour = kColours[p->series % std::size(kColours)];
-      draw->AddCircleFilled(point(*p), 4.0f, colour);
-      if (p->label == now) draw->AddCircle(point(*p), 8.0f, IM_COL32(208, 54, 44, 255), 0, 2.0f);
+      draw->AddCircleFilled(point(*p), 4.0f, kColours[p->series % std::size(kColours)]);
+    }
+    if (ring != nullptr) {
+      draw->AddCircle(point(*ring), 8.0f, IM_COL32(208, 54, 44, 255), 0, 2.0f);
+    }
+    if (error_now > 0.0) {
+      draw->AddLine(ImVec2(at.x, y(error_now)), ImVec2(at.x + width, y(error_now)),
+                    IM_COL32(208, 54, 44, 255), 1.5f);
     }
     ImGui::Dummy(ImVec2(width, height + 2.0f));
     for (size_t k = 0; k < hosted_.size(); ++k) {
-      if (k % 4 != 0) ImGui::SameLine();
+      if (k % 5 != 0) ImGui::SameLine();
       ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(kColours[k % std::size(kColours)]), "%s",
                          hosted_[k]->spec().key.c_str());
     }
-    if (ImGui::Button("Forget these points")) tried_.clear();
   }
   // One colour a technique, in the choice's order (bench_sweep's plot uses its own).
-  static constexpr ImU32 kColours[] = {IM_COL32(224, 138, 0, 255),  IM_COL32(42, 157, 60, 255),
-                                       IM_COL32(142, 68, 173, 255), IM_COL32(22, 163, 184, 255),
-                                       IM_COL32(214, 51, 108, 255), IM_COL32(122, 92, 46, 255),
-                                       IM_COL32(90, 107, 140, 255), IM_COL32(181, 176, 0, 255)};
+  static constexpr ImU32 kColours[] = {
+      IM_COL32(224, 138, 0, 255),  IM_COL32(42, 157, 60, 255),  IM_COL32(142, 68, 173, 255),
+      IM_COL32(22, 163, 184, 255), IM_COL32(214, 51, 108, 255), IM_COL32(122, 92, 46, 255),
+      IM_COL32(90, 107, 140, 255), IM_COL32(181, 176, 0, 255),  IM_COL32(227, 119, 194, 255)};
 
   HostedLesson& active() {
     return *hosted_.at(static_cast<size_t>(technique_.param().i()));
@@ -387,7 +468,8 @@ class ChooseYourShadow final : public Lesson {
   FloatParam light_radius_, move_x_, move_z_;
   IntParam moving_;
   std::string cannot_;
-  Tried tried_;  // what the student measured, for the panel's front
+  std::optional<BenchFront> bench_;  // bench_sweep's points, for the panel's bench front
+  Tried tried_;                      // what the student measured, for the panel's front
   std::shared_ptr<const ErrorPixels> last_pixels_;
   std::string sampled_label_;  // the settings frame_samples_ are of
   std::vector<double> frame_samples_;

@@ -38,7 +38,12 @@ SHADOWS_SWEEP(
                 "lightmap_16:technique=lightmap",
                 "lightmap_32:technique=lightmap lightmap/lightmap.texels_per_unit=32",
                 "lightmap_hybrid:technique=lightmap lightmap/lightmap.mode=hybrid",
-                "volumes:technique=volumes"}},
+                "volumes:technique=volumes",
+                "plane_optimal_frame:technique=warped warped/shadow.size=640 "
+                "warped/shadow.height=480",
+                "plane_optimal_1024:technique=warped warped/shadow.size=1024",
+                "lispsm_1024:technique=warped warped/light.projection=lispsm "
+                "warped/shadow.size=1024"}},
               {"light",
                {"point:light.radius=0", "disk:light.radius=0.1",
                 "disk_moved:light.radius=0.1 move.x=1.2"}}},

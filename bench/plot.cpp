@@ -426,8 +426,8 @@ std::string frontPlotData(const std::filesystem::path& dat, const std::string& n
     for (size_t r = 0; r < t.rows.size(); ++r)
       series_of[r] = indexOf(seriesOf(rowSettings(sweep, t, r)));
   }
-  static constexpr unsigned kSeriesColours[] = {0xe08a00, 0x2a9d3c, 0x8e44ad, 0x16a3b8,
-                                                0xd6336c, 0x7a5c2e, 0x5a6b8c, 0xb5b000};
+  static constexpr unsigned kSeriesColours[] = {0xe08a00, 0x2a9d3c, 0x8e44ad, 0x16a3b8, 0xd6336c,
+                                                0x7a5c2e, 0x5a6b8c, 0xb5b000, 0xe377c2};
   const auto colourOf = [&](size_t r) {
     return series_names.empty() ? 0xb9b9b9u
                                 : kSeriesColours[series_of[r] % std::size(kSeriesColours)];
@@ -644,7 +644,11 @@ std::string frontPlotData(const std::filesystem::path& dat, const std::string& n
     key_default =
         any_default ? "a lesson's default settings" : "no setting here is a lesson's default";
   } else {
-    key_default = "the lesson's default" + (defaults.empty() ? "" : " (" + defaults + ")") +
+    // A line of the key, cut at a word (lesson 16's defaults name every technique's knobs):
+    // the CSV's is_default row has them all.
+    std::string shown = defaults;
+    if (shown.size() > 150) shown = shown.substr(0, shown.rfind(' ', 150)) + " ...";
+    key_default = "the lesson's default" + (shown.empty() ? "" : " (" + shown + ")") +
                   (any_default ? "" : ": not in this sweep");
   }
   std::string note;

@@ -10,6 +10,7 @@ READMEs quote comes from a command anyone can re-run:
   bench/tables.py pcf bench/results/pcf_cost.csv
   bench/tables.py front bench/results/05_pcf_dithered.csv   # any sweep's CSV: the table under its plot
   bench/tables.py bake bench/results/15_light_maps.csv       # lesson 15: error against what a bake costs
+  bench/tables.py points docs/bench_16_choose_your_shadow.csv > 16_choose_your_shadow/bench_points.inc
 """
 import csv
 import statistics
@@ -208,6 +209,26 @@ def bake(path):
                   f"{num(r, 'lightmap/bytes') / 1e6:.2g} MB | " + (f"**{text}**" if on_front else text) + " |")
 
 
+def points(path):
+    """A sweep's points as C++ initializers, for a lesson's panel to draw the bench's front
+    (lesson 16: bench_front.hpp): scene, light, setting, its settings, the front's time and
+    vis_mae. The suite checks the lesson's copy is what this prints (bench_points_current)."""
+    data = rows(path)
+    time = data[0]["front_time"]
+    def quote(text):
+        return '"' + text.replace('\\', '\\\\').replace('"', '\\"') + '"'
+    print(f"// Generated: bench/tables.py points {path}")
+    print(f"inline constexpr const char* kBenchTime = {quote(time)};")
+    print(f"inline constexpr const char* kBenchMachine = {quote(data[0]['machine'] + ', ' + data[0]['renderer'])};")
+    sizes = ordered(f"{r['width']}x{r['height']}" for r in data)
+    print(f"inline constexpr const char* kBenchSize = {quote(' '.join(sizes))};")
+    print("inline constexpr BenchPoint kBenchPoints[] = {")
+    for r in data:
+        fields = ", ".join(quote(r[k]) for k in ("scene", "light", "setting", "settings"))
+        print(f"    {{{fields}, {num(r, time):.6g}, {num(r, 'vis_mae'):.6g}}},")
+    print("};")
+
+
 if __name__ == "__main__":
     if len(sys.argv) >= 3 and sys.argv[1] == "precision":
         precision(sys.argv[2])
@@ -219,6 +240,8 @@ if __name__ == "__main__":
         front(sys.argv[2])
     elif len(sys.argv) >= 3 and sys.argv[1] == "bake":
         bake(sys.argv[2])
+    elif len(sys.argv) >= 3 and sys.argv[1] == "points":
+        points(sys.argv[2])
     elif len(sys.argv) >= 3 and sys.argv[1] == "copy":
         copy(sys.argv[2:])
     else:

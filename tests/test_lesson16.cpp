@@ -6,6 +6,7 @@
 // against the same light.
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "../16_choose_your_shadow/bench_front.hpp"
 #include "harness.hpp"
 
 namespace shadows {
@@ -60,6 +61,10 @@ TEST(Lesson16, EachTechniqueDrawsItsLessonsPictureByteForByte) {
        {"inset=false", "pcss.count=false", "pcss.light_radius=0.2"}},
       {"cube", "11_omni_cube", {"cube/omni.method=tetrahedron"}, {"omni.method=tetrahedron"}},
       {"volumes", "09_shadow_volumes", {}, {}},
+      {"warped",
+       "10_plane_optimal",
+       {"warped/light.projection=lispsm", "warped/shadow.size=512"},
+       {"inset=false", "light.projection=lispsm", "shadow.size=512"}},
       {"lightmap",
        "15_light_maps",
        {"lightmap/lightmap.mode=hybrid", "light.radius=0.2", "move.x=0.8"},
@@ -134,7 +139,7 @@ TEST(Lesson16, TextureBytesAreTheTechniquesMaps) {
 // why, and the frame is the one without a shadow.
 TEST(Lesson16, ATechniqueThatCannotServeTheLightSaysSoAndDrawsNoShadow) {
   for (const auto& [scene, key] : std::vector<std::pair<std::string, std::string>>{
-           {"contact", "cascades"}, {"street", "cube"}}) {
+           {"contact", "cascades"}, {"street", "cube"}, {"street", "warped"}}) {
     auto runner = startLesson(kLesson, {"scene=" + scene, "technique=" + key});
     runner->renderFrame();
     EXPECT_NE(testing::reportString(*runner, "technique_cannot"), "") << key;
@@ -148,10 +153,13 @@ TEST(Lesson16, ATechniqueThatCannotServeTheLightSaysSoAndDrawsNoShadow) {
         0u)
         << key;
   }
-  auto fine = startLesson(kLesson, {"scene=street", "technique=cascades"});  // the only runner
-  fine->renderFrame();
-  EXPECT_EQ(testing::reportString(*fine, "technique_cannot"), "");
-  EXPECT_EQ(fine->checkConsistency(), "");
+  // The street has no floor for plane-optimal; LiSPSM, the same lesson's warp, needs none.
+  for (const char* fine_sets : {"technique=cascades", "warped/light.projection=lispsm"}) {
+    auto fine = startLesson(kLesson, {"scene=street", "technique=warped", fine_sets});
+    fine->renderFrame();
+    EXPECT_EQ(testing::reportString(*fine, "technique_cannot"), "") << fine_sets;
+    EXPECT_EQ(fine->checkConsistency(), "") << fine_sets;
+  }
 }
 
 // A caster moves while the hard map is drawn (no parameter changes: the runner tells the host
@@ -230,6 +238,51 @@ TEST(Lesson16, EveryTechniqueIsScoredOnTheSamePixelsAgainstTheSameLight) {
   // The map covers a cone of the bulb's light: outside it, a map says lit where the truth has
   // shadow. The cube sees every direction.
   EXPECT_GT(hard["error"]["vis_mae"].get<double>(), 2.0 * cube["error"]["vis_mae"].get<double>());
+}
+
+}  // namespace
+}  // namespace shadows
+
+namespace shadows {
+namespace {
+
+// The panel's bench front: the sweep's points of the current preset and light, the current
+// settings' point among them where the sweep measured them, a knob it did not set at its
+// default, and none under a light it did not measure.
+TEST(Lesson16, TheBenchsFrontIsThisPresetAndLightsWithTheseSettingsRinged) {
+  auto runner = startLesson(kLesson, {"scene=street", "technique=hard", "hard/shadow.size=2048"});
+  Params& p = runner->params();
+  const BenchFront bench(p);
+  const auto ringed = [&] {
+    const BenchFront::Here here = bench.at(p);
+    return here.current < 0 ? std::string() : here.points[static_cast<size_t>(here.current)].label;
+  };
+  BenchFront::Here here = bench.at(p);
+  EXPECT_EQ(here.light, "point");
+  ASSERT_FALSE(here.points.empty());
+  for (const Tried::Point& q : here.points) EXPECT_EQ(q.where, "point");
+  EXPECT_EQ(ringed(), "hard_2048");
+  ASSERT_EQ(p.assign("hard/bias.mode=none"), "");  // a knob the sweep left: not its point
+  EXPECT_EQ(ringed(), "");
+  ASSERT_EQ(p.assign("hard/bias.mode=back_faces"), "");
+  EXPECT_EQ(ringed(), "hard_2048") << "bias.mode's default";
+  ASSERT_EQ(p.assign("technique=cascades"), "");
+  ASSERT_EQ(p.assign("cascades/cascades.count=2"), "");
+  EXPECT_EQ(ringed(), "cascades_2");
+  ASSERT_EQ(p.assign("light.radius=0.1"), "");
+  EXPECT_EQ(bench.at(p).light, "disk");
+  EXPECT_EQ(ringed(), "cascades_2");
+  ASSERT_EQ(p.assign("move.x=1.2"), "");
+  EXPECT_EQ(bench.at(p).light, "disk_moved");
+  ASSERT_EQ(p.assign("light.radius=0.3"), "");
+  EXPECT_TRUE(bench.at(p).points.empty()) << "the sweep measured no disk of 0.3";
+  ASSERT_EQ(p.assign("light.radius=0"), "");
+  ASSERT_EQ(p.assign("move.x=0"), "");
+  ASSERT_EQ(p.assign("scene=bulb"), "");
+  const BenchFront::Here bulb = bench.at(p);
+  EXPECT_EQ(ringed(), "") << "cascades under the bulb were refused, never measured";
+  EXPECT_TRUE(std::none_of(bulb.points.begin(), bulb.points.end(),
+                           [](const Tried::Point& q) { return q.label == "cascades_2"; }));
 }
 
 }  // namespace

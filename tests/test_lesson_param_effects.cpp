@@ -177,7 +177,7 @@ const std::map<std::string, std::vector<std::string>> kActsWhen = {
     {"12_cascades/cascades.update", {"cascades.fit=slice", "cascades.snap=false"}},
     // 16: a knob acts while its technique draws (below, for every other knob); these also
     // need what their own lesson needs: 05's taps a Poisson disk; 14's search a light with a
-    // size; cascades a sun.
+    // size; cascades a sun; LiSPSM's n its projection.
     {"16_choose_your_shadow/pcf/pcf.taps", {"technique=pcf", "pcf/pcf.mode=poisson"}},
     {"16_choose_your_shadow/move.object", {"move.x=1"}},
     {"16_choose_your_shadow/pcss/pcss.search_taps", {"technique=pcss", "light.radius=0.3"}},
@@ -185,6 +185,8 @@ const std::map<std::string, std::vector<std::string>> kActsWhen = {
     {"16_choose_your_shadow/cascades/cascades.count", {"technique=cascades", "scene=street"}},
     {"16_choose_your_shadow/cascades/cascades.size", {"technique=cascades", "scene=street"}},
     {"16_choose_your_shadow/cascades/cascades.blend", {"technique=cascades", "scene=street"}},
+    {"16_choose_your_shadow/warped/lispsm.n",
+     {"technique=warped", "warped/light.projection=lispsm"}},
 };
 
 // Lesson 16's knobs (technique/name) act while that technique draws.

@@ -32,6 +32,8 @@
 #include <string>
 #include <vector>
 
+#include "../16_choose_your_shadow/bench_front.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -389,6 +391,41 @@ TEST(ReadmeTimingClaims, EveryQuotedTimingIsTheMedianOfTheCsvItCites) {
     EXPECT_TRUE(within(median, c.figure))
         << where << ": the README prints " << c.figure.text << ", " << c.csv << " gives " << median;
   }
+}
+
+// Lesson 16's panel draws the bench's front from bench_points.inc: its rows must be the CSV the
+// README reads, or the panel and the plot disagree.
+TEST(ReadmeTimingClaims, Lesson16sPanelPointsAreItsSweepsCsv) {
+  using shadows::BenchPoint, shadows::kBenchPoints, shadows::kBenchTime;
+  const std::string csv = "docs/bench_16_choose_your_shadow.csv";
+  const std::string again = "; after a sweep, run: bench/tables.py points " + csv +
+                            " > 16_choose_your_shadow/bench_points.inc";
+  std::ifstream in(fs::path(SHADOWS_SOURCE_DIR) / csv);
+  ASSERT_TRUE(in) << csv;
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> header = csvFields(line);
+  const auto column = [&](const std::string& name) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    EXPECT_NE(it, header.end()) << csv << ": no column " << name;
+    return static_cast<size_t>(it - header.begin());
+  };
+  size_t n = 0;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> row = csvFields(line);
+    if (row.size() != header.size() || row[column("status")] != "ok") continue;
+    ASSERT_LT(n, std::size(kBenchPoints)) << "more rows than the panel's" << again;
+    const BenchPoint& p = kBenchPoints[n++];
+    const std::string where = csv + " row " + std::to_string(n) + again;
+    EXPECT_EQ(p.scene, row[column("scene")]) << where;
+    EXPECT_EQ(p.light, row[column("light")]) << where;
+    EXPECT_EQ(p.setting, row[column("setting")]) << where;
+    EXPECT_EQ(p.settings, row[column("settings")]) << where;
+    EXPECT_EQ(kBenchTime, row[column("front_time")]) << where;
+    EXPECT_NEAR(p.ms, std::stod(row[column(kBenchTime)]), 1e-5 * p.ms) << where;
+    EXPECT_NEAR(p.error, std::stod(row[column("vis_mae")]), 1e-5 * p.error) << where;
+  }
+  EXPECT_EQ(n, std::size(kBenchPoints)) << "fewer rows than the panel's" << again;
 }
 
 }  // namespace
