@@ -84,8 +84,8 @@ class ProjectiveTexture final : public Lesson {
   }
 
   void init() override {
-    program_ =
-        Program(lessonFile(LESSON_DIR, "projector.vert"), lessonFile(LESSON_DIR, "projector.frag"));
+    programs_ = ProgramVariants(lessonFile(LESSON_DIR, "projector.vert"),
+                                lessonFile(LESSON_DIR, "projector.frag"));
   }
 
   void render(Frame& f) override {
@@ -100,8 +100,12 @@ class ProjectiveTexture final : public Lesson {
     counted.near = frustum.directional ? -1e4f : 1e-3f;
     counted.far = 1e4f;
     f.light_view_projection = lightProjection(counted) * f.light.view;
-    const glm::vec3 axis = f.light.direction;
-    const glm::vec4 projector_plane{axis, -glm::dot(axis, f.light.position)};
+    axis_ = f.light.direction;
+    const glm::vec4 projector_plane{axis_, -glm::dot(axis_, f.light.position)};
+    texture_matrix_ = shadowTextureMatrix(projection, f.light.view);  // B P V
+    projector_plane_ = projector_plane;
+    half_angle_ = glm::radians(0.5f * frustum.fov);
+    extent_ = frustum.extent;
 
     const float grey = f.shows(views::kVisibility) ? 0.0f : 0.13f;  // visibility: 0, not counted
     f.clearTarget(glm::vec3(grey, grey, grey * 1.2f));
@@ -109,29 +113,16 @@ class ProjectiveTexture final : public Lesson {
       f.drawImageInset(slide_, /*fullscreen=*/true);
       return;
     }
-    const int mode = f.shows(views::kVisibility) ? 1 : f.shows(kTexcoords) ? 2 : 0;
     slide_.bind(0);
-    program_.set("uSlide", 0);
-    program_.set("uViewProjection", f.projection * f.view);
-    program_.set("uTextureMatrix", shadowTextureMatrix(projection, f.light.view));  // B P V
-    program_.set("uProjectorPlane", projector_plane);
-    program_.set("uMode", mode);
-    program_.set("uQTest", q_test_() ? 1 : 0);
-    program_.set("uFalloff", falloff_());
-    program_.set("uHalfAngle", glm::radians(0.5f * frustum.fov));
-    program_.set("uExtent", frustum.extent);
-    program_.set("uAxis", axis);
-    program_.set("uClip", 0);
-    f.setLightingUniforms(program_, 0.0f);
-
     {  // Pass 1: ambient light on everything (or the texcoords view).
       auto timing = f.measure.pass("ambient", /*countPassed=*/true);
-      program_.set("uPass", 0);
-      f.drawObjects(program_, Objects::All);
+      const Program& ambient = projectorProgram(f, 0);
+      ambient.set("uClip", 0);
+      f.drawObjects(ambient, Objects::All);
     }
-    if (mode == 2) return;
+    if (f.shows(kTexcoords)) return;
     projectorPass(f, projector_plane);
-    if (mode == 0 && inset_()) f.drawImageInset(slide_);
+    if (!f.shows(views::kVisibility) && inset_()) f.drawImageInset(slide_);
   }
 
   void panel(Frame& f) override {
@@ -206,15 +197,15 @@ class ProjectiveTexture final : public Lesson {
       add.depth_func = GL_LEQUAL;
     }
     add.apply();
-    program_.set("uClip", behind == "clip" ? 1 : 0);
-    program_.set("uPass", 1);
+    const Program& program = projectorProgram(f, 1);
+    program.set("uClip", behind == "clip" ? 1 : 0);
     skipped_ = 0;
     for (size_t i = 0; i < f.scene.objects.size(); ++i) {
       if (behind == "skip" && entirelyBehind(f.scene.objects[i], projector_plane)) {
         ++skipped_;
         continue;
       }
-      f.drawObject(program_, i);
+      f.drawObject(program, i);
     }
     f.measure.count("skipped_behind_projector", skipped_);
     PassState{}.apply();
@@ -244,7 +235,29 @@ class ProjectiveTexture final : public Lesson {
   }
 
   // The slide itself, over the whole target or in the bottom-right corner.
-  Program program_;
+  // The pass's variant (issue 56: the view, the pass and a falloff of 0 are compiled in, not
+  // branched on per fragment), with the uniforms both passes share.
+  const Program& projectorProgram(const Frame& f, int pass) {
+    const Program& p = programs_.get(
+        {f.viewDefines(), define("PASS", pass), feature("SPOT_FALLOFF", falloff_() > 0.0f)});
+    p.set("uSlide", 0);
+    p.set("uViewProjection", f.projection * f.view);
+    p.set("uTextureMatrix", texture_matrix_);
+    p.set("uProjectorPlane", projector_plane_);
+    p.set("uQTest", q_test_() ? 1 : 0);
+    p.set("uFalloff", falloff_());
+    p.set("uHalfAngle", half_angle_);
+    p.set("uExtent", extent_);
+    p.set("uAxis", axis_);
+    f.setLightingUniforms(p, 0.0f);
+    return p;
+  }
+
+  ProgramVariants programs_;
+  glm::mat4 texture_matrix_{1.0f};
+  glm::vec4 projector_plane_{0.0f};
+  glm::vec3 axis_{0.0f};
+  float half_angle_ = 0.0f, extent_ = 0.0f;
   Texture slide_;
   std::string loaded_;
   StringParam image_;

@@ -41,6 +41,7 @@ cases=(
   "14_soft_shadows|PCF_KERNEL|pcss.mode=fixed pcf.radius=0"
   "14_soft_shadows|PCSS_SEARCH|pcss.light_radius=0"
   "08_atmospherics|AIR_SLICES|air.density=0"
+  "02_projective_texture|SPOT_FALLOFF|(the default)"
 )
 frame() {  # LESSON SETTINGS...: the frame's M instructions
   local lesson=$1

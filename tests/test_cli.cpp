@@ -92,6 +92,46 @@ TEST_F(Cli, HeadlessRunWritesPictureAndReportWithTimingsCountersAndError) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 2);
 }
 
+// scripts/neutral_floor.sh's hook (issue 56): a run dumps every variant's source as the GL
+// gets it; a floor file of one's name is compiled in its place, and the run says so.
+TEST_F(Cli, AShaderFloorReplacesTheVariantOfItsNameAndSaysSo) {
+  const fs::path dump = dir / "dump", floor = dir / "floor";
+  const std::string args = "--headless --no-truth --size 64x48 --frames 1 --out ";
+  Result r =
+      run(kLesson, args + (dir / "a.png").string(), "SHADOWS_SHADER_DUMP=" + dump.string() + " ");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // The eye pass's lit variant: 03's scene.frag without SHADOW_OFF.
+  fs::path lit;
+  for (const auto& entry : fs::directory_iterator(dump)) {
+    std::ifstream in(entry.path());
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string name = entry.path().filename().string();
+    if (name.starts_with("scene-") && text.str().find("#define SHADOW_OFF 1") == std::string::npos)
+      lit = entry.path();
+  }
+  ASSERT_FALSE(lit.empty()) << "no lit scene.frag among the dumped variants";
+  // Its copy with one more line before main: a fragment that is always red.
+  std::ifstream in(lit);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string red = text.str();
+  const size_t main_at = red.rfind("void main()");
+  ASSERT_NE(main_at, std::string::npos);
+  red.replace(main_at, 11, "void mainAsRun()");
+  red += "\nvoid main() { mainAsRun(); outColor = vec4(1.0, 0.0, 0.0, 1.0); }\n";
+  fs::create_directories(floor);
+  std::ofstream(floor / lit.filename()) << red;
+  r = run(kLesson, args + (dir / "b.png").string(), "SHADOWS_SHADER_FLOOR=" + floor.string() + " ");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("shader floor: " + lit.filename().string()), std::string::npos)
+      << r.output;
+  const shadows::Image a = shadows::readPng((dir / "a.png").string());
+  const shadows::Image b = shadows::readPng((dir / "b.png").string());
+  ASSERT_EQ(a.rgba.size(), b.rgba.size());
+  EXPECT_NE(a.rgba, b.rgba) << "the floor's red was not drawn";
+}
+
 TEST_F(Cli, OutputsToDevNullLeaveItADevice) {
   const Result r = run(kLesson,
                        "--headless --size 64x48 --frames 1 --out /dev/null --report "

@@ -243,6 +243,7 @@ INSTANTIATE_TEST_SUITE_P(
                     "NORMAL_OFFSET",
                     "bias.factor=1"},
         NeutralCase{"11_omni_cube", {"bias.normal=0"}, "NORMAL_OFFSET", "bias.normal=0.5"},
+        NeutralCase{"02_projective_texture", {}, "SPOT_FALLOFF", "falloff=0.3"},
         NeutralCase{"12_cascades", {"cascades.blend=0"}, "CASCADE_BLEND", "cascades.blend=0.2"},
         NeutralCase{"12_cascades", {"cascades.count=1"}, "CASCADE_BLEND", "cascades.count=3"},
         NeutralCase{"12_cascades", {}, "KEPT_CASCADES", ""},

@@ -1,6 +1,7 @@
 // Shader programs from files: #include resolved, compile errors as file:line, variants
 // selected by #defines and compiled on first use.
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -100,6 +101,38 @@ std::string versionLines(const std::string& fileVersion, const Caps& c) {
 
 namespace {
 
+// The floor of issue 56 (scripts/neutral_floor.sh): a variant's source as the GL gets it,
+// named by its file and a hash of that text. SHADOWS_SHADER_DUMP=DIR writes each there;
+// SHADOWS_SHADER_FLOOR=DIR compiles DIR's file of that name, where it has one (the variant
+// with its neutral code stripped by hand), in its place, and says so on stderr. A file whose
+// name no source hashes to any more is stale, and the script says so.
+void floorSource(const std::filesystem::path& file, std::string& text) {
+  const auto folder = [](const char* name) -> const char* {
+    const char* value = std::getenv(name);
+    return value != nullptr && *value != '\0' ? value : nullptr;
+  };
+  static const char* dump = folder("SHADOWS_SHADER_DUMP");
+  static const char* floor = folder("SHADOWS_SHADER_FLOOR");
+  if (dump == nullptr && floor == nullptr) return;
+  std::uint32_t hash = 2166136261u;  // FNV-1a
+  for (const char c : text) hash = (hash ^ static_cast<unsigned char>(c)) * 16777619u;
+  char suffix[16];
+  std::snprintf(suffix, sizeof suffix, "-%08x", hash);
+  const std::string name = file.stem().string() + suffix + file.extension().string();
+  if (dump != nullptr) {
+    std::error_code ignored;  // a folder that cannot be made writes nothing
+    std::filesystem::create_directories(dump, ignored);
+    std::ofstream(std::filesystem::path(dump) / name, std::ios::binary) << text;
+  }
+  if (floor == nullptr) return;
+  std::ifstream in(std::filesystem::path(floor) / name, std::ios::binary);
+  if (!in) return;
+  std::ostringstream stripped;
+  stripped << in.rdbuf();
+  text = stripped.str();
+  std::fprintf(stderr, "shader floor: %s\n", name.c_str());
+}
+
 GLuint compile(GLenum stage, const std::filesystem::path& file,
                const std::vector<std::string>& defines) {
   ShaderSource src = preprocessShader(file);
@@ -117,6 +150,7 @@ GLuint compile(GLenum stage, const std::filesystem::path& file,
     head = versionLines(src.text.substr(version, end - version), caps()) + head;
     src.text.replace(version, end + 1 - version, head);
   }
+  floorSource(file, src.text);
   const GLuint shader = glCreateShader(stage);
   const char* text = src.text.c_str();
   glShaderSource(shader, 1, &text, nullptr);
