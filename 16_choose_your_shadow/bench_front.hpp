@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <span>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,8 +34,8 @@ struct BenchPoint {
 class BenchFront {
  public:
   // Lesson 16's parameters as declared: `technique`, and each technique's knobs named after it
-  // ("pcf/pcf.taps").
-  explicit BenchFront(const Params& host) {
+  // ("pcf/pcf.taps"). Throws std::logic_error where a point's settings no longer read.
+  explicit BenchFront(const Params& host, std::span<const BenchPoint> points = kBenchPoints) {
     for (const std::string& key : host.at("technique").choices) {
       knobs_.emplace_back();
       for (const Param& q : host.all()) {
@@ -41,13 +43,19 @@ class BenchFront {
       }
     }
     Params scratch = host;  // each point's settings read as --set reads them
-    for (const BenchPoint& p : kBenchPoints) {
+    for (const BenchPoint& p : points) {
       Row row{&p, 0, {}};
       std::istringstream words(p.settings);
       for (std::string word; words >> word;) {
         const size_t eq = word.find('=');
         const std::string name = word.substr(0, eq);
-        if (eq == std::string::npos || !scratch.set(name, word.substr(eq + 1)).empty()) continue;
+        // A word that no longer reads (a knob renamed since the sweep) would match anything.
+        const std::string why =
+            eq == std::string::npos ? "no '='" : scratch.set(name, word.substr(eq + 1));
+        if (!why.empty()) {
+          throw std::logic_error(std::string("bench_points.inc: ") + p.setting + ": " + word +
+                                 ": " + why + "; run bench_sweep again");
+        }
         const Param& q = scratch.at(name);
         row.values.push_back({name, {q.value[0], q.value[1], q.value[2]}});
         if (name == "technique") row.technique = static_cast<size_t>(q.i());
@@ -62,12 +70,13 @@ class BenchFront {
     int current = -1;                  // the point the current settings are, -1 for none
   };
   // The bench's points on the current preset under the current light (none where the bench
-  // did not measure this light), and which of them the current settings are.
+  // did not measure this light, or the light or the camera moved), and which of them the
+  // current settings are.
   Here at(const Params& host) const {
     Here here;
     const std::string scene = host.at("scene").choice();
     for (const Row& r : rows_) {
-      if (scene != r.point->scene || !same(host, r, kLight)) continue;
+      if (scene != r.point->scene || !same(host, r, kFrame)) continue;
       here.light = r.point->light;
       if (same(host, r, {"technique"}) && same(host, r, knobs_.at(r.technique))) {
         here.current = static_cast<int>(here.points.size());
@@ -84,9 +93,11 @@ class BenchFront {
     size_t technique;
     std::vector<std::pair<std::string, std::array<double, 3>>> values;  // as the sweep set them
   };
-  // What makes a light, as the sweep varies it: a caster moved is another truth.
-  static inline const std::vector<std::string> kLight = {"light.radius", "move.object", "move.x",
-                                                         "move.z"};
+  // What makes the frame the sweep measured: the light as it varied it (a caster moved is
+  // another truth), the preset's light and camera, which it left as they are.
+  static inline const std::vector<std::string> kFrame = {
+      "light.radius", "move.object", "move.x",       "move.z",     "light.type",    "light.pos",
+      "light.target", "light.fov",   "light.extent", "camera.pos", "camera.target", "camera.fov"};
   // Does the host have, for each of `names`, the row's value, or the default the row left?
   static bool same(const Params& host, const Row& r, const std::vector<std::string>& names) {
     for (const std::string& name : names) {

@@ -66,7 +66,8 @@ std::vector<HostedLesson::Spec> techniques() {
        {"lightmap.mode", "lightmap.texels_per_unit"},
        {{"light.radius", "lightmap.light_radius"}}},
       {"volumes", "09_shadow_volumes", {}, {}, {}},  // exact: nothing to trade
-      // 10's default: the plane of interest's pixels each get a texel (a map the frame's size).
+      // 10's default: plane-optimal on the floor, a 1024² map (warped/shadow.size=640 and
+      // warped/shadow.height=480 make it the frame's size: a texel a floor pixel).
       {"warped",
        "10_plane_optimal",
        {"inset=false"},
@@ -355,12 +356,12 @@ class ChooseYourShadow final : public Lesson {
     const BenchFront::Here here = bench_->at(f.params);
     if (here.points.empty()) {
       ImGui::TextWrapped(
-          "The bench measured this preset under a point light, a disk of 0.1 "
-          "and that disk with the last caster moved 1.2 along x: its front is "
-          "drawn under those.");
+          "The bench measured each preset from its own camera and light, with light.radius 0, "
+          "0.1, and 0.1 with the last caster moved 1.2 along x: its front is drawn under "
+          "those (the camera back: C).");
       return;
     }
-    ImGui::TextWrapped("The bench's front here (%s light): its %s across, vis_mae up, both log",
+    ImGui::TextWrapped("The bench's front here (its light=%s): its %s across, vis_mae up, both log",
                        here.light.c_str(), kBenchTime);
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip(
@@ -370,17 +371,21 @@ class ChooseYourShadow final : public Lesson {
     }
     std::vector<const Tried::Point*> points;
     for (const Tried::Point& p : here.points) points.push_back(&p);
+    // A frame drawn without a shadow (refused, or shadow.off) is no point of any front.
+    const bool shadowed = cannot_.empty() && !f.params.at("shadow.off").b();
     const ErrorState& error = f.runner.lastError();
     const Tried::Point* ring =
-        here.current >= 0 ? &here.points[static_cast<size_t>(here.current)] : nullptr;
-    drawFront(points, ring,
-              ring == nullptr && error.valid && cannot_.empty() ? error.metrics.vis_mae : 0.0);
+        here.current >= 0 && shadowed ? &here.points[static_cast<size_t>(here.current)] : nullptr;
+    const bool line = ring == nullptr && shadowed && error.valid;
+    drawFront(points, ring, line ? error.metrics.vis_mae : 0.0);
     if (ring != nullptr) {
       ImGui::TextWrapped("ringed: these settings, the bench's %s (vis_mae %.3g at %s)",
                          ring->label.c_str(), ring->error, kBenchSize);
+    } else if (!shadowed) {
+      ImGui::TextWrapped("this frame has no shadow: no point of a front");
     } else {
       ImGui::TextWrapped("these settings are not among the bench's%s",
-                         error.valid && cannot_.empty() ? ": the red line is their error now" : "");
+                         line ? ": the red line is their error now, at this frame's size" : "");
     }
   }
 

@@ -278,11 +278,22 @@ TEST(Lesson16, TheBenchsFrontIsThisPresetAndLightsWithTheseSettingsRinged) {
   EXPECT_TRUE(bench.at(p).points.empty()) << "the sweep measured no disk of 0.3";
   ASSERT_EQ(p.assign("light.radius=0"), "");
   ASSERT_EQ(p.assign("move.x=0"), "");
+  EXPECT_EQ(bench.at(p).light, "point");
+  const std::string sun = p.at("light.pos").text();
+  ASSERT_EQ(p.assign("light.pos=30,40,-16"), "");  // the sweep kept the preset's sun
+  EXPECT_TRUE(bench.at(p).points.empty()) << "a moved light is another frame";
+  ASSERT_EQ(p.assign("light.pos=" + sun), "");
   ASSERT_EQ(p.assign("scene=bulb"), "");
   const BenchFront::Here bulb = bench.at(p);
+  ASSERT_FALSE(bulb.points.empty());
   EXPECT_EQ(ringed(), "") << "cascades under the bulb were refused, never measured";
   EXPECT_TRUE(std::none_of(bulb.points.begin(), bulb.points.end(),
                            [](const Tried::Point& q) { return q.label == "cascades_2"; }));
+  // A point whose settings no longer read (a knob renamed since the sweep) is refused, not
+  // taken to match whatever the knob is now.
+  const BenchPoint renamed[] = {
+      {"street", "point", "hard_2048", "technique=hard hard/map.size=2048 light.radius=0", 1, 1}};
+  EXPECT_THROW(BenchFront(p, renamed), std::logic_error);
 }
 
 }  // namespace
