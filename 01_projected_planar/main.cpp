@@ -60,8 +60,8 @@ class ProjectedPlanar final : public Lesson {
   }
 
   void init() override {
-    scene_program_ =
-        Program(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
+    scene_programs_ =
+        ProgramVariants(lessonFile(LESSON_DIR, "scene.vert"), lessonFile(LESSON_DIR, "scene.frag"));
     shadow_program_ =
         Program(lessonFile(LESSON_DIR, "shadow.vert"), lessonFile(LESSON_DIR, "shadow.frag"));
   }
@@ -75,18 +75,18 @@ class ProjectedPlanar final : public Lesson {
     {
       auto timing = f.measure.pass("scene", /*countPassed=*/true);
       f.clearTarget(mode == 0 ? Frame::kSky : glm::vec3(0.0f));
-      scene_program_.set("uViewProjection", f.projection * f.view);
-      scene_program_.set("uMode", mode);
-      f.setLightingUniforms(scene_program_, 1.0f);
+      const Program& scene = scene_programs_.get({f.viewDefines()});
+      scene.set("uViewProjection", f.projection * f.view);
+      f.setLightingUniforms(scene, 1.0f);
       for (size_t i = 0; i < f.scene.objects.size(); ++i) {
-        if (i != receiver_) f.drawObject(scene_program_, i);
+        if (i != receiver_) f.drawObject(scene, i);
       }
       PassState mark;
       mark.stencil_test = true;
       mark.stencil_ref = 1;
       mark.stencil_pass = fix_receiver_() ? GL_REPLACE : GL_KEEP;
       mark.apply();
-      if (receiver_ < f.scene.objects.size()) f.drawObject(scene_program_, receiver_);
+      if (receiver_ < f.scene.objects.size()) f.drawObject(scene, receiver_);
     }
     if (projecting) drawShadows(f, mode);
     PassState{}.apply();
@@ -277,7 +277,8 @@ class ProjectedPlanar final : public Lesson {
     f.measure.count("skipped_casters", skipped);
   }
 
-  Program scene_program_, shadow_program_;
+  ProgramVariants scene_programs_;
+  Program shadow_program_;
   size_t receiver_ = 0;
   glm::vec4 plane_{0.0f}, light_{0.0f};
   long long casters_drawn_ = 0;

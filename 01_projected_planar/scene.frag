@@ -6,14 +6,17 @@
 in vec3 vWorld;
 in vec3 vNormal;
 uniform vec3 uColor;
-uniform int uMode;  // 0 shaded, 1 visibility (white until a shadow darkens it), 2 overdraw
 out vec4 outColor;
 
+// VIEW is a variant (issue 56): llvmpipe would run every view's branch on a uniform.
 void main() {
-  if (uMode == 1) {
-    outColor = vec4(1.0);
-    return;
-  }
+#if VIEW == VIEW_VISIBILITY
+  outColor = vec4(1.0);  // white until a shadow darkens it
+#else
   vec3 lit = shadeSurface(uColor, vWorld, normalize(vNormal), 1.0);
-  outColor = vec4(uMode == 2 ? 0.3 * lit : lit, 1.0);  // overdraw: dim, so layers stand out
+#if VIEW == VIEW_OVERDRAW
+  lit *= 0.3;  // dim, so layers stand out
+#endif
+  outColor = vec4(lit, 1.0);
+#endif
 }

@@ -5,6 +5,12 @@
 #define HAS_CLIP_DISTANCE 1
 #define HAS_EARLY_FRAGMENT_TESTS 1
 #define HAS_STORAGE_BUFFERS 1
+#define VIEW_SHADED 0
+#define VIEW_VISIBILITY 1
+#define VIEW_OVERDRAW 2
+#define VIEW_TRUTH 3
+#define VIEW_ERROR 4
+#define VIEW VIEW_SHADED
 #line 2 0
 // Every surface fully lit (shade = 1). Planar shadows are not looked up here: they are
 // blended onto the receiver afterwards, as dark copies of the casters.
@@ -40,10 +46,17 @@ vec3 shadeSurface(vec3 albedo, vec3 p, vec3 n, float shade) {
 in vec3 vWorld;
 in vec3 vNormal;
 uniform vec3 uColor;
-uniform int uMode;  // 0 shaded, 1 visibility (white until a shadow darkens it), 2 overdraw
 out vec4 outColor;
 
+// VIEW is a variant (issue 56): llvmpipe would run every view's branch on a uniform.
 void main() {
+#if VIEW == VIEW_VISIBILITY
+  outColor = vec4(1.0);  // white until a shadow darkens it
+#else
   vec3 lit = shadeSurface(uColor, vWorld, normalize(vNormal), 1.0);
+#if VIEW == VIEW_OVERDRAW
+  lit *= 0.3;  // dim, so layers stand out
+#endif
   outColor = vec4(lit, 1.0);
+#endif
 }
