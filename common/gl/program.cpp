@@ -125,11 +125,10 @@ void floorSource(const std::filesystem::path& file, std::string& text) {
     std::ofstream(std::filesystem::path(dump) / name, std::ios::binary) << text;
   }
   if (floor == nullptr) return;
-  std::ifstream in(std::filesystem::path(floor) / name, std::ios::binary);
-  if (!in) return;
-  std::ostringstream stripped;
-  stripped << in.rdbuf();
-  text = stripped.str();
+  const std::filesystem::path stripped = std::filesystem::path(floor) / name;
+  std::error_code none;
+  if (!std::filesystem::is_regular_file(stripped, none)) return;
+  text = readFile(stripped);
   std::fprintf(stderr, "shader floor: %s\n", name.c_str());
 }
 
