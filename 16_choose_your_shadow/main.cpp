@@ -177,31 +177,11 @@ class ChooseYourShadow final : public Lesson {
   // instructor/SOLUTIONS.md has the intended solutions (kept off the students' site).
   std::vector<Exercise> exercises() const override {
     using B = Figure::Bound;
-    const std::vector<std::string> every = {"technique",
-                                            "hard/shadow.size",
-                                            "hard/bias.mode",
-                                            "pcf/shadow.size",
-                                            "pcf/pcf.mode",
-                                            "pcf/pcf.taps",
-                                            "pcf/pcf.radius",
-                                            "filtered/shadow.size",
-                                            "filtered/filter.method",
-                                            "filtered/filter.radius",
-                                            "pcss/shadow.size",
-                                            "pcss/pcss.search_taps",
-                                            "pcss/pcf.taps",
-                                            "cascades/cascades.count",
-                                            "cascades/cascades.size",
-                                            "cascades/cascades.blend",
-                                            "cube/omni.method",
-                                            "cube/cube.size",
-                                            "lightmap/lightmap.mode",
-                                            "lightmap/lightmap.texels_per_unit",
-                                            "warped/light.projection",
-                                            "warped/plane",
-                                            "warped/lispsm.n",
-                                            "warped/shadow.size",
-                                            "warped/shadow.height"};
+    // The choice and every technique's knobs, as techniques() offers them.
+    std::vector<std::string> every = {"technique"};
+    for (const HostedLesson::Spec& spec : techniques()) {
+      for (const std::string& knob : spec.knobs) every.push_back(spec.key + "/" + knob);
+    }
     return {{.title = "A bulb in a room",
              .goal = "A bare bulb lights every direction; lesson 05's map covers a cone of "
                      "them (vis_mae 0.073). Get vis_mae to 0.002 or less, holding at most 2 MiB "
